@@ -1,0 +1,106 @@
+/*---------------------------------------------------------------------------*\
+Application
+    interDemFoam
+
+Description
+    Two incompressible, isothermal, immiscible fluids (VoF, free surface)
+    carrying the locally averaged equations of a fluid that shares its cells
+    with DEM particles: the fluid volume fraction (porosity, "voidfraction")
+    eps enters continuity, momentum and the phase-fraction transport
+
+        d(eps)/dt + div(eps U) = 0                                  (seed eq. 8)
+        d(eps alpha)/dt + div(eps U alpha) = 0        (seed eq. 10, with eps)
+        d(eps rho U)/dt + div(eps rho U U) = - eps grad(p) + eps div(tau)
+                          + eps rho g + eps F_s + f_pf              (seed eq. 9)
+
+    Reference: Li et al. (2021), Front. Earth Sci. 9:673249, eq. 8-12.
+    The particles and the exchange with LIGGGHTS live in libdemCoupling
+    (class demCoupling::particleCloud); this file only orders the algorithm.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "CMULES.H"
+#include "EulerDdtScheme.H"
+#include "subCycle.H"
+#include "immiscibleIncompressibleTwoPhaseMixture.H"
+#include "turbulentTransportModel.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "particleCloud.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Two-phase VoF solver for the locally averaged equations of a fluid"
+        " coupled to LIGGGHTS particles (CFD-DEM)."
+    );
+
+    #include "postProcess.H"
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+    #include "createFvOptions.H"
+    #include "initContinuityErrs.H"
+
+    turbulence->validate();
+
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+        #include "alphaCourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // Coupling step: DEM advance, particle data, void fraction,
+        // particle-fluid forces, fluid source terms (eps, Ksl, Us, fExplicit)
+        particles.evolve();
+
+        while (pimple.loop())
+        {
+            #include "alphaControls.H"
+            #include "alphaEqn.H"
+            mixture.correct();
+
+            #include "UEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+
+            if (pimple.turbCorr())
+            {
+                turbulence->correct();
+            }
+        }
+
+        runTime.write();
+        particles.report();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    particles.printTimingSplit();
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+// ************************************************************************* //

@@ -1,0 +1,68 @@
+#include "forceModel.H"
+
+namespace Foam
+{
+namespace demCoupling
+{
+    defineTypeNameAndDebug(forceModel, 0);
+    defineRunTimeSelectionTable(forceModel, dictionary);
+}
+}
+
+
+Foam::demCoupling::forceModel::forceModel(const dictionary& coeffs)
+:
+    coeffs_(coeffs)
+{}
+
+
+Foam::autoPtr<Foam::demCoupling::forceModel>
+Foam::demCoupling::forceModel::New
+(
+    const word& name,
+    const dictionary& dict
+)
+{
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "forces",
+            name,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    Info<< "Selecting force model " << name << endl;
+
+    return autoPtr<forceModel>
+    (
+        cstrIter()(dict.subOrEmptyDict(name + "Coeffs"))
+    );
+}
+
+
+Foam::PtrList<Foam::demCoupling::forceModel>
+Foam::demCoupling::forceModel::NewList(const dictionary& dict)
+{
+    const wordList names(dict.get<wordList>("forces"));
+
+    PtrList<forceModel> models(names.size());
+    forAll(names, i)
+    {
+        for (label j = 0; j < i; ++j)
+        {
+            if (names[j] == names[i])
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Force model " << names[i] << " listed twice in "
+                    << "'forces'" << exit(FatalIOError);
+            }
+        }
+        models.set(i, New(names[i], dict));
+    }
+    return models;
+}

@@ -1,0 +1,101 @@
+#include "voidFractionModel.H"
+
+namespace Foam
+{
+namespace demCoupling
+{
+    defineTypeNameAndDebug(voidFractionModel, 0);
+    defineRunTimeSelectionTable(voidFractionModel, dictionary);
+}
+}
+
+
+Foam::demCoupling::voidFractionModel::voidFractionModel
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    mesh_(mesh),
+    minVoidFraction_
+    (
+        dict.getCheck<scalar>
+        (
+            "minVoidFraction",
+            [](const scalar v) { return v > 0 && v < 1; }
+        )
+    ),
+    cells_(),
+    weights_(),
+    floorHits_(0),
+    totalFloorHits_(0)
+{}
+
+
+Foam::autoPtr<Foam::demCoupling::voidFractionModel>
+Foam::demCoupling::voidFractionModel::New
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+{
+    const word modelType(dict.get<word>("voidFraction"));
+
+    Info<< "Selecting void-fraction model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "voidFraction",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<voidFractionModel>(cstrIter()(dict, mesh));
+}
+
+
+void Foam::demCoupling::voidFractionModel::update
+(
+    const particleData& particles,
+    volScalarField& eps
+)
+{
+    cells_.setSize(particles.size());
+    weights_.setSize(particles.size());
+    distribute(particles);
+
+    scalarField solid(mesh_.nCells(), 0);
+    const scalarField& V = mesh_.V();
+
+    forAll(cells_, i)
+    {
+        const scalar Vp = particles.volume(i);
+        forAll(cells_[i], k)
+        {
+            const label c = cells_[i][k];
+            solid[c] += weights_[i][k]*Vp/V[c];
+        }
+    }
+
+    floorHits_ = 0;
+    scalarField& epsI = eps.primitiveFieldRef();
+    forAll(epsI, c)
+    {
+        epsI[c] = 1 - solid[c];
+        if (epsI[c] < minVoidFraction_)
+        {
+            epsI[c] = minVoidFraction_;
+            ++floorHits_;
+        }
+    }
+    reduce(floorHits_, sumOp<label>());
+    totalFloorHits_ += floorHits_;
+
+    eps.correctBoundaryConditions();
+}
