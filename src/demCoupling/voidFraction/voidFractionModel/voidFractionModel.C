@@ -41,8 +41,6 @@ Foam::demCoupling::voidFractionModel::New
 {
     const word modelType(dict.get<word>("voidFraction"));
 
-    Info<< "Selecting void-fraction model " << modelType << endl;
-
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
 
     if (!cstrIter.found())
@@ -55,6 +53,8 @@ Foam::demCoupling::voidFractionModel::New
             *dictionaryConstructorTablePtr_
         ) << exit(FatalIOError);
     }
+
+    Info<< "Selecting void-fraction model " << modelType << endl;
 
     return autoPtr<voidFractionModel>(cstrIter()(dict, mesh));
 }

@@ -1,0 +1,25 @@
+# interDemFoam test suite, read by ctest directly (no CMake step):
+#     cd tests && ctest            (tests/Alltest builds first, then does this)
+#     ctest -L unit | -L case | -L build
+# Case tests run in tests/run/<name>; a skipped test exits 77.
+
+add_test(unit.setupMesh "bash" "unit/setupMesh.sh")
+set_tests_properties(unit.setupMesh PROPERTIES
+    LABELS "unit" FIXTURES_SETUP unitMesh)
+
+add_test(unit.demCoupling "demCouplingTests" "-case" "run/meshCase")
+set_tests_properties(unit.demCoupling PROPERTIES
+    LABELS "unit" FIXTURES_REQUIRED unitMesh TIMEOUT 120)
+
+add_test(case.closedBoxSerial "bash" "cases/closedBoxConservation.sh" "serial")
+set_tests_properties(case.closedBoxSerial PROPERTIES LABELS "case" TIMEOUT 600)
+
+add_test(case.closedBoxParallel "bash" "cases/closedBoxConservation.sh" "parallel")
+set_tests_properties(case.closedBoxParallel PROPERTIES LABELS "case;parallel" TIMEOUT 600)
+
+add_test(case.badAlphaControls "bash" "cases/badAlphaControls.sh")
+set_tests_properties(case.badAlphaControls PROPERTIES LABELS "case;input" TIMEOUT 300)
+
+add_test(build.allwmakeOffline "bash" "cases/allwmakeOffline.sh")
+set_tests_properties(build.allwmakeOffline PROPERTIES
+    LABELS "build;input" TIMEOUT 300 SKIP_RETURN_CODE 77)

@@ -1,0 +1,39 @@
+# Shared helpers of the case tests (sourced). Each test runs in its own
+# folder under tests/run/ and exits 0 (pass), 1 (fail) or 77 (skipped).
+
+[ -n "$INTERDEMFOAM_DIR" ] || { echo "source etc/bashrc first" 1>&2; exit 1; }
+. "$WM_PROJECT_DIR/bin/tools/RunFunctions"
+
+testsDir="$INTERDEMFOAM_DIR/tests"
+runDir="$testsDir/run"
+
+fail() { echo "FAIL: $*" 1>&2; exit 1; }
+pass() { echo "PASS: $*"; exit 0; }
+
+# Fresh copy of a tutorial under tests/run/<name>
+copyTutorial()
+{
+    local tutorial="$1" name="$2"
+    rm -rf "$runDir/$name"
+    mkdir -p "$runDir"
+    cp -r "$INTERDEMFOAM_TUTORIALS/$tutorial" "$runDir/$name"
+    "$runDir/$name/Allclean" > /dev/null 2>&1
+    cd "$runDir/$name" || fail "cannot enter $runDir/$name"
+}
+
+# Set a controlDict/fvSolution entry: setEntry <file> <key> <value>
+setEntry()
+{
+    foamDictionary -entry "$2" -set "$3" "$1" > /dev/null \
+        || fail "cannot set $2 in $1"
+}
+
+# Largest relative deviation from the first value in column 2 of a
+# function-object table (comment lines skipped)
+maxRelativeDrift()
+{
+    awk '!/^#/ && NF >= 2 {
+        if (!n++) { v0 = $2 }
+        d = ($2 - v0)/v0; if (d < 0) d = -d; if (d > m) m = d
+    } END { if (!n) { print "nan"; exit 1 } printf "%.3e\n", m }' "$1"
+}

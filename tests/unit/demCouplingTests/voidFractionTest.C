@@ -1,0 +1,127 @@
+// Void-fraction models on a 5 x 5 x 5 mesh of a 1 cm cube: particle volume
+// is conserved, sum (1 - eps) V = sum V_p, and the floor is counted.
+
+#include <gtest/gtest.h>
+#include "testMain.H"
+#include "voidFractionModel.H"
+#include "volFields.H"
+#include "Random.H"
+#include "zeroGradientFvPatchFields.H"
+
+using namespace Foam;
+using namespace Foam::demCoupling;
+
+namespace
+{
+autoPtr<volScalarField> newEps(const fvMesh& mesh)
+{
+    return autoPtr<volScalarField>::New
+    (
+        IOobject("voidfraction", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        zeroGradientFvPatchScalarField::typeName
+    );
+}
+
+dictionary modelDict(const word& model, const scalar minEps)
+{
+    dictionary dict;
+    dict.add("voidFraction", model);
+    dict.add("minVoidFraction", minEps);
+    return dict;
+}
+
+// n particles at random positions, diameters in [dMin, dMax]
+particleData randomParticles
+(
+    const fvMesh& mesh, const label n, const scalar dMin, const scalar dMax
+)
+{
+    Random rnd(1234);
+    const boundBox& bb = mesh.bounds();
+    particleData p;
+    p.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        p.position[i] = bb.min() + cmptMultiply(rnd.sample01<vector>(), bb.span());
+        p.diameter[i] = dMin + (dMax - dMin)*rnd.sample01<scalar>();
+        p.density[i] = 2500;
+        p.cell[i] = mesh.findCell(p.position[i]);
+    }
+    return p;
+}
+}
+
+
+TEST(centreVoidFraction, ConservesParticleVolume)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar dx = Foam::cbrt(mesh.V()[0]);   // 2 mm
+
+    // 40 particles of 0.1 ... 0.5 dx: no cell reaches the floor
+    const particleData p = randomParticles(mesh, 40, 0.1*dx, 0.5*dx);
+
+    auto model = voidFractionModel::New(modelDict("centre", 0.05), mesh);
+    auto eps = newEps(mesh);
+    model->update(p, *eps);
+
+    scalar Vp = 0;
+    forAll(p.diameter, i) { Vp += p.volume(i); }
+    const scalar Vsolid = gSum((1 - eps->primitiveField())*mesh.V());
+
+    ASSERT_EQ(model->floorHits(), 0);
+    EXPECT_NEAR(Vsolid, Vp, 1e-12*Vp);
+
+    // each particle's weights sum to one, on its host cell only
+    forAll(p.cell, i)
+    {
+        ASSERT_EQ(model->cells(i).size(), 1);
+        EXPECT_EQ(model->cells(i)[0], p.cell[i]);
+        EXPECT_DOUBLE_EQ(model->weights(i)[0], 1.0);
+    }
+}
+
+
+TEST(centreVoidFraction, FloorIsAppliedAndCounted)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar dx = Foam::cbrt(mesh.V()[0]);
+
+    // one particle as large as the cell: V_p/V_c = pi/6 = 0.52 -> eps 0.48
+    particleData p;
+    p.resize(1);
+    p.position[0] = mesh.C()[62];
+    p.cell[0] = 62;
+    p.diameter[0] = dx;
+
+    auto eps = newEps(mesh);
+
+    auto loose = voidFractionModel::New(modelDict("centre", 0.2), mesh);
+    loose->update(p, *eps);
+    EXPECT_NEAR((*eps)[62], 1 - constant::mathematical::pi/6, 1e-12);
+    EXPECT_EQ(loose->floorHits(), 0);
+
+    auto tight = voidFractionModel::New(modelDict("centre", 0.6), mesh);
+    tight->update(p, *eps);
+    EXPECT_DOUBLE_EQ((*eps)[62], 0.6);
+    EXPECT_EQ(tight->floorHits(), 1);
+    EXPECT_EQ(tight->totalFloorHits(), 1);
+}
+
+
+TEST(centreVoidFraction, ParticleOutsideMeshIsSkipped)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    particleData p;
+    p.resize(1);
+    p.position[0] = point(1, 1, 1);   // far outside the 1 cm cube
+    p.diameter[0] = 1e-3;
+    p.cell[0] = mesh.findCell(p.position[0]);
+    ASSERT_EQ(p.cell[0], -1);
+
+    auto model = voidFractionModel::New(modelDict("centre", 0.2), mesh);
+    auto eps = newEps(mesh);
+    model->update(p, *eps);
+    EXPECT_DOUBLE_EQ(gMin(eps->primitiveField()), 1.0);
+}
