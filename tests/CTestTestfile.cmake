@@ -23,3 +23,17 @@ set_tests_properties(case.badAlphaControls PROPERTIES LABELS "case;input" TIMEOU
 add_test(build.allwmakeOffline "bash" "cases/allwmakeOffline.sh")
 set_tests_properties(build.allwmakeOffline PROPERTIES
     LABELS "build;input" TIMEOUT 300 SKIP_RETURN_CODE 77)
+
+# Coupled to LIGGGHTS: one particle from air into water (seed Table 1)
+# against the seed's eq. 19, serial, on 2 ranks, and with adjustTimeStep
+add_test(case.settlingSerial "bash" "cases/singleParticleSettling.sh" "serial")
+set_tests_properties(case.settlingSerial PROPERTIES LABELS "case;coupled" TIMEOUT 600)
+
+add_test(case.settlingParallel "bash" "cases/singleParticleSettling.sh" "parallel")
+set_tests_properties(case.settlingParallel PROPERTIES LABELS "case;coupled;parallel" TIMEOUT 600)
+
+add_test(case.settlingAdjustable "bash" "cases/singleParticleSettling.sh" "adjustable")
+set_tests_properties(case.settlingAdjustable PROPERTIES LABELS "case;coupled" TIMEOUT 600)
+
+add_test(case.couplingInputErrors "bash" "cases/couplingInputErrors.sh")
+set_tests_properties(case.couplingInputErrors PROPERTIES LABELS "case;coupled;input" TIMEOUT 600)

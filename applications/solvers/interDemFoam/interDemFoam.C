@@ -54,6 +54,15 @@ int main(int argc, char *argv[])
 
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
+    if (adjustTimeStep)
+    {
+        const scalar dt0 = runTime.deltaTValue();
+        runTime.setDeltaT
+        (
+            particles.wholeDemSteps(dt0, dt0, dt0),
+            !particles.active()
+        );
+    }
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -62,7 +71,7 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         #include "CourantNo.H"
         #include "alphaCourantNo.H"
-        #include "setDeltaT.H"
+        #include "setDemDeltaT.H"
 
         ++runTime;
         Info<< "Time = " << runTime.timeName() << nl << endl;
@@ -91,6 +100,10 @@ int main(int argc, char *argv[])
         }
 
         runTime.write();
+        if (runTime.writeTime())
+        {
+            particles.writeParticles();
+        }
         particles.report();
 
         runTime.printExecutionTime(Info);

@@ -1,7 +1,12 @@
 #include "particleCloud.H"
-#include "incompressibleTwoPhaseMixture.H"
+#include "immiscibleIncompressibleTwoPhaseMixture.H"
 #include "zeroGradientFvPatchFields.H"
+#include "fvcGrad.H"
+#include "fvcReconstruct.H"
+#include "surfaceFields.H"
 #include "Time.H"
+#include "passiveParticleCloud.H"
+#include "IOField.H"
 
 namespace
 {
@@ -25,80 +30,93 @@ Foam::autoPtr<Foam::IOdictionary> readCouplingDict(const Foam::fvMesh& mesh)
     }
     return autoPtr<IOdictionary>::New(io);
 }
+
+// A field the solver writes, created (value init) when 0/ lacks it
+template<class Type>
+Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh> couplingField
+(
+    const Foam::fvMesh& mesh,
+    const Foam::word& name,
+    const Foam::dimensioned<Type>& init,
+    const Foam::IOobject::writeOption w = Foam::IOobject::AUTO_WRITE
+)
+{
+    using namespace Foam;
+    return GeometricField<Type, fvPatchField, volMesh>
+    (
+        IOobject
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            w == IOobject::AUTO_WRITE
+          ? IOobject::READ_IF_PRESENT
+          : IOobject::NO_READ,
+            w
+        ),
+        mesh,
+        init,
+        zeroGradientFvPatchField<Type>::typeName
+    );
 }
 
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::demCoupling::particleCloud::particleCloud
 (
     const fvMesh& mesh,
     const volVectorField& U,
     const volScalarField& rho,
-    const incompressibleTwoPhaseMixture& mixture
+    const immiscibleIncompressibleTwoPhaseMixture& mixture
 )
 :
     mesh_(mesh),
+    U_(U),
+    rho_(rho),
+    mixture_(mixture),
     couplingDict_(readCouplingDict(mesh)),
+    engine_(),
+    locator_(),
+    voidFraction_(),
+    forces_(),
+    momentumCoupling_(),
+    adjustTimeStep_
+    (
+        mesh.time().controlDict().getOrDefault<Switch>("adjustTimeStep", false)
+    ),
     voidfraction_
     (
-        IOobject
-        (
-            "voidfraction",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
-        mesh,
-        dimensionedScalar("one", dimless, 1),
-        zeroGradientFvPatchScalarField::typeName
+        couplingField(mesh, "voidfraction", dimensionedScalar("one", dimless, 1.0))
     ),
-    Us_
-    (
-        IOobject
-        (
-            "Us",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
-        mesh,
-        dimensionedVector(dimVelocity, Zero),
-        zeroGradientFvPatchVectorField::typeName
-    ),
+    Us_(couplingField(mesh, "Us", dimensionedVector(dimVelocity, Zero))),
     Ksl_
     (
-        IOobject
-        (
-            "Ksl",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
-        mesh,
-        dimensionedScalar(dimDensity/dimTime, Zero),
-        zeroGradientFvPatchScalarField::typeName
+        couplingField(mesh, "Ksl", dimensionedScalar("zero", dimDensity/dimTime, 0.0))
     ),
     fExplicit_
     (
-        IOobject
+        couplingField
         (
-            "fExplicit",
-            mesh.time().timeName(),
             mesh,
-            IOobject::NO_READ,
+            "fExplicit",
+            dimensionedVector(dimForce/dimVolume, Zero),
             IOobject::NO_WRITE
-        ),
-        mesh,
-        dimensionedVector(dimForce/dimVolume, Zero),
-        zeroGradientFvPatchVectorField::typeName
+        )
     ),
     particles_(),
+    fluidForce_(),
+    K_(),
+    reactingForce_(),
+    Uf_(),
+    demSteps_(0),
     clock_(),
     demTime_(0),
     couplingTime_(0),
-    startTime_(clock_.elapsedTime())
+    startTime_(clock_.elapsedTime()),
+    lastProgress_(startTime_)
 {
     // Keep the previous time level of eps for d(eps)/dt
     voidfraction_.oldTime();
@@ -111,11 +129,180 @@ Foam::demCoupling::particleCloud::particleCloud
         return;
     }
 
-    FatalIOErrorInFunction(couplingDict_())
-        << "This build of libdemCoupling has no DEM engine yet: the coupling"
-        << " to LIGGGHTS is not available." << nl
-        << "    Remove " << couplingDict_().objectPath()
-        << " to run without particles." << exit(FatalIOError);
+    const dictionary& dict = couplingDict_();
+
+    Info<< "Coupling to the DEM (" << couplingDict_().objectPath() << ")"
+        << endl;
+
+    // Models first (cheap, and their input errors come before the DEM's)
+    voidFraction_ = voidFractionModel::New(dict, mesh);
+    forces_ = forceModel::NewList(dict);
+    momentumCoupling_ = momentumCouplingModel::New(dict, mesh);
+    locator_.reset(new particleLocator(mesh));
+
+    engine_.reset(new demEngine(dict, mesh.time()));
+
+    // The particles' volume from the start, so that time 0 sees it
+    updateParticles();
+    voidfraction_.oldTime() = voidfraction_;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::demCoupling::particleCloud::updateParticles()
+{
+    engine_->gather(particles_);
+    locator_->locate(particles_);
+    voidFraction_->update(particles_, voidfraction_);
+}
+
+
+Foam::demCoupling::particleFluidState
+Foam::demCoupling::particleCloud::fluidState
+(
+    const label i,
+    const volScalarField& mu,
+    const volVectorField& gradP
+) const
+{
+    const voidFractionModel& vf = voidFraction_();
+
+    particleFluidState s;
+    s.Up = particles_.velocity[i];
+    s.omega = particles_.omega[i];
+    s.d = particles_.diameter[i];
+    s.rhoP = particles_.density[i];
+    s.Uf = vf.average(i, U_);
+    s.eps = vf.average(i, voidfraction_);
+    s.rhoF = vf.average(i, rho_);
+    s.muF = vf.average(i, mu);
+    s.gradP = vf.average(i, gradP);
+    return s;
+}
+
+
+void Foam::demCoupling::particleCloud::computeForces()
+{
+    const label n = particles_.size();
+
+    fluidForce_.setSize(n);
+    K_.setSize(n);
+    reactingForce_.setSize(n);
+    Uf_.setSize(n);
+    fluidForce_ = Zero;
+    K_ = 0;
+    reactingForce_ = Zero;
+    Uf_ = Zero;
+
+    const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
+    const volScalarField mu(mixture_.mu());
+
+    // grad(p) without the capillary pressure jump (see Description)
+    const volVectorField gradP
+    (
+        "gradPParticles",
+        fvc::grad(p)
+      - fvc::reconstruct(mixture_.surfaceTensionForce()*mesh_.magSf())
+    );
+
+    forAll(particles_.cell, i)
+    {
+        if (particles_.cell[i] < 0)
+        {
+            continue;
+        }
+        const particleFluidState s(fluidState(i, mu, gradP));
+        Uf_[i] = s.Uf;
+
+        for (const forceModel& model : forces_)
+        {
+            const particleForce f(model.force(s));
+            fluidForce_[i] += f.total(s);
+            if (model.reactsOnFluid())
+            {
+                K_[i] += f.K;
+                reactingForce_[i] += f.explicitForce;
+            }
+        }
+
+        if (!std::isfinite(magSqr(fluidForce_[i])) || !std::isfinite(K_[i]))
+        {
+            FatalErrorInFunction
+                << "Non-finite fluid force " << fluidForce_[i]
+                << " on DEM particle " << particles_.tag[i]
+                << " at " << particles_.position[i]
+                << " (cell " << particles_.cell[i] << ", time "
+                << mesh_.time().timeName() << "): fluid velocity " << s.Uf
+                << ", eps " << s.eps << ", rho " << s.rhoF
+                << ", mu " << s.muF << ", grad(p) " << s.gradP << nl
+                << "    Results up to the last write time are kept."
+                << exit(FatalError);
+        }
+    }
+
+    momentumCoupling_->assemble
+    (
+        particles_, voidFraction_(), K_, Uf_, reactingForce_,
+        Ksl_, Us_, fExplicit_
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::demCoupling::particleCloud::wholeDemSteps
+(
+    const scalar dt,
+    const scalar dtOld,
+    const scalar dtLimit
+) const
+{
+    if (!active())
+    {
+        return dt;
+    }
+    const scalar dtDem = engine_->timeStep();
+    const label nOld = max(label(1), label(std::round(dtOld/dtDem)));
+
+    label n = max(label(1), label(std::floor(dt/dtDem*(1 + 1e-9))));
+    if (n <= nOld && dt > dtOld*(1 + 1e-9) && (nOld + 1)*dtDem <= dtLimit)
+    {
+        // Growth wanted but lost to rounding: one DEM step more
+        n = nOld + 1;
+    }
+
+    // Land on the end time and on write times (writeControl runTime or
+    // adjustableRunTime), in whole DEM steps
+    const Time& runTime = mesh_.time();
+    const scalar t = runTime.value();
+    auto capAt = [&](const scalar tTarget)
+    {
+        // nTo DEM steps to go: split them into equal coupling steps of at
+        // most n (as Time::adjustDeltaT does), so the last one lands
+        const label nTo = label(std::round((tTarget - t)/dtDem));
+        if (nTo >= 1)
+        {
+            const label nSteps = (nTo + n - 1)/n;
+            n = (nTo + nSteps - 1)/nSteps;
+        }
+    };
+    capAt(runTime.endTime().value());
+
+    const dictionary& control = runTime.controlDict();
+    const word writeControl
+    (
+        control.getOrDefault<word>("writeControl", "timeStep")
+    );
+    if (writeControl == "runTime" || writeControl == "adjustableRunTime")
+    {
+        const scalar interval = control.get<scalar>("writeInterval");
+        const scalar t0 = runTime.startTime().value();
+        const scalar k = std::floor((t - t0)/interval + 1e-6) + 1;
+        capAt(t0 + k*interval);
+    }
+
+    return n*dtDem;
 }
 
 
@@ -125,11 +312,153 @@ void Foam::demCoupling::particleCloud::evolve()
     {
         return;
     }
+
+    const dictionary& dict = couplingDict_();
+    const Time& runTime = mesh_.time();
+
+    // DEM steps in this coupling step: a whole number
+    const scalar dtDem = engine_->timeStep();
+    const scalar ratio = runTime.deltaTValue()/dtDem;
+    demSteps_ = label(std::round(ratio));
+    if (demSteps_ < 1 || mag(ratio - demSteps_) > 1e-6*ratio)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "deltaT " << runTime.deltaTValue() << " s is not a whole"
+            << " number of DEM steps (timestep " << dtDem << " s in "
+            << engine_->script() << "): ratio " << ratio << nl
+            << "    Set deltaT to a whole multiple of the DEM timestep."
+            << exit(FatalIOError);
+    }
+    if (!adjustTimeStep_ && demSteps_ != engine_->coupleEvery())
+    {
+        FatalIOErrorInFunction(dict)
+            << "The DEM script " << engine_->script() << " has couple_every "
+            << engine_->coupleEvery() << ", but deltaT/timestep = "
+            << runTime.deltaTValue() << "/" << dtDem << " = " << demSteps_
+            << " DEM steps per coupling step." << nl
+            << "    Set couple_every " << demSteps_ << " in the fix couple/cfd,"
+            << " or change deltaT in system/controlDict." << exit(FatalIOError);
+    }
+
+    // 1. DEM advance
+    scalar t0 = clock_.elapsedTime();
+    engine_->advance(demSteps_);
+    scalar t1 = clock_.elapsedTime();
+    demTime_ += t1 - t0;
+
+    // 2-4. particle data, locate, void fraction
+    updateParticles();
+
+    // 5-6. fluid at the particles, forces, fluid sources
+    computeForces();
+
+    // 7. forces back to the DEM
+    engine_->setForces(fluidForce_, List<vector>());
+
+    couplingTime_ += clock_.elapsedTime() - t1;
 }
 
 
-void Foam::demCoupling::particleCloud::report() const
-{}
+void Foam::demCoupling::particleCloud::report()
+{
+    const Time& runTime = mesh_.time();
+
+    if (active())
+    {
+        label hosted = 0;
+        for (const label c : particles_.cell)
+        {
+            if (c >= 0) ++hosted;
+        }
+        reduce(hosted, sumOp<label>());
+
+        Info<< "Particles: " << particles_.size() << " in the DEM, "
+            << hosted << " in the mesh, " << demSteps_ << " DEM steps,"
+            << " min(voidfraction) " << gMin(voidfraction_) << endl;
+
+        if (locator_->lost())
+        {
+            Info<< "Warning: " << locator_->lost() << " particle(s) outside"
+                << " the fluid mesh at t = " << runTime.timeName()
+                << " s: no fluid force on them" << endl;
+        }
+        if (voidFraction_->floorHits())
+        {
+            Info<< "Warning: voidfraction floor " << voidFraction_->minVoidFraction()
+                << " hit in " << voidFraction_->floorHits() << " cell(s) at"
+                << " t = " << runTime.timeName() << " s ("
+                << voidFraction_->totalFloorHits() << " since the start)"
+                << endl;
+        }
+    }
+
+    // Progress of long runs: every 30 s of wall time and at the end
+    const scalar now = clock_.elapsedTime();
+    const scalar tNow = runTime.value();
+    const scalar tEnd = runTime.endTime().value();
+    const scalar tStart = runTime.startTime().value();
+    const bool last = tNow >= tEnd - 0.5*runTime.deltaTValue();
+    if (now - lastProgress_ >= 30 || last)
+    {
+        lastProgress_ = now;
+        const scalar wall = now - startTime_;
+        const scalar done = (tNow - tStart)/max(tEnd - tStart, VSMALL);
+        const scalar eta = done > 0 ? wall*(1 - done)/done : 0;
+        Info<< "Progress: t = " << tNow << " s of " << tEnd << " s ("
+            << label(100*done) << " %), wall " << label(wall) << " s, ETA "
+            << label(eta) << " s" << endl;
+    }
+}
+
+
+void Foam::demCoupling::particleCloud::writeParticles() const
+{
+    if (!active())
+    {
+        return;
+    }
+
+    IDLList<passiveParticle> list;
+    DynamicList<scalar> d;
+    DynamicList<vector> Up, F, omega;
+    DynamicList<label> id, type;
+    forAll(particles_.cell, i)
+    {
+        if (particles_.cell[i] < 0)
+        {
+            continue;
+        }
+        list.append
+        (
+            new passiveParticle(mesh_, particles_.position[i], particles_.cell[i])
+        );
+        d.append(particles_.diameter[i]);
+        Up.append(particles_.velocity[i]);
+        F.append(i < fluidForce_.size() ? fluidForce_[i] : Zero);
+        omega.append(particles_.omega[i]);
+        id.append(particles_.tag[i]);
+        type.append(particles_.type[i]);
+    }
+
+    passiveParticleCloud cloud(mesh_, "demParticles", list);
+    cloud.write();
+
+    if (cloud.size())
+    {
+        IOField<scalar>(cloud.fieldIOobject("d", IOobject::NO_READ), d).write();
+        IOField<vector>(cloud.fieldIOobject("U", IOobject::NO_READ), Up).write();
+        IOField<vector>(cloud.fieldIOobject("F", IOobject::NO_READ), F).write();
+        IOField<vector>
+        (
+            cloud.fieldIOobject("omega", IOobject::NO_READ), omega
+        ).write();
+        IOField<label>(cloud.fieldIOobject("id", IOobject::NO_READ), id).write();
+        IOField<label>
+        (
+            cloud.fieldIOobject("type", IOobject::NO_READ), type
+        ).write();
+    }
+}
 
 
 void Foam::demCoupling::particleCloud::printTimingSplit() const
@@ -140,3 +469,6 @@ void Foam::demCoupling::particleCloud::printTimingSplit() const
     Info<< "Timing split: DEM " << demTime_ << " s, CFD " << cfd
         << " s, coupling " << couplingTime_ << " s" << endl;
 }
+
+
+// ************************************************************************* //

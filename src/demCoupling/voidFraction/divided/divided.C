@@ -1,0 +1,142 @@
+#include "divided.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace demCoupling
+{
+namespace voidFractionModels
+{
+    defineTypeNameAndDebug(divided, 0);
+    addToRunTimeSelectionTable(voidFractionModel, divided, dictionary);
+}
+}
+}
+
+
+Foam::demCoupling::voidFractionModels::divided::divided
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    voidFractionModel(dict, mesh),
+    unitPoints_()
+{
+    // 32 points of the Halton sequence (bases 2, 3, 5) inside the unit
+    // sphere and their mirror images: 64 equal shares of the volume, centred
+    // on the particle, whose coordinates (nearly all) differ, so a particle
+    // hands its volume across a mesh-aligned face in many small parts
+    auto halton = [](label i, const label base)
+    {
+        scalar f = 1, r = 0;
+        while (i > 0)
+        {
+            f /= base;
+            r += f*(i % base);
+            i /= base;
+        }
+        return r;
+    };
+    DynamicList<vector> pts(64);
+    for (label i = 1; pts.size() < 32; ++i)
+    {
+        const vector x
+        (
+            2*halton(i, 2) - 1, 2*halton(i, 3) - 1, 2*halton(i, 5) - 1
+        );
+        if (magSqr(x) <= 1)
+        {
+            pts.append(x);
+        }
+    }
+    for (label i = 0; i < 32; ++i)
+    {
+        pts.append(-pts[i]);
+    }
+    unitPoints_.transfer(pts);
+}
+
+
+Foam::label Foam::demCoupling::voidFractionModels::divided::findCell
+(
+    const point& p,
+    const label host
+) const
+{
+    if (mesh_.pointInCell(p, host, polyMesh::CELL_TETS))
+    {
+        return host;
+    }
+    for (const label nbr : mesh_.cellCells()[host])
+    {
+        if (mesh_.pointInCell(p, nbr, polyMesh::CELL_TETS))
+        {
+            return nbr;
+        }
+    }
+    return mesh_.findCell(p, polyMesh::CELL_TETS);
+}
+
+
+void Foam::demCoupling::voidFractionModels::divided::distribute
+(
+    const particleData& particles
+)
+{
+    forAll(particles.cell, i)
+    {
+        const label host = particles.cell[i];
+        cells_[i].clear();
+        weights_[i].clear();
+        if (host < 0)
+        {
+            continue;
+        }
+
+        const scalar r = 0.5*particles.diameter[i];
+        const point& x0 = particles.position[i];
+
+        // Points per cell (a particle touches few cells: linear search)
+        DynamicList<label> cells(8);
+        DynamicList<label> counts(8);
+        label found = 0;
+        for (const vector& u : unitPoints_)
+        {
+            const label c = findCell(x0 + r*u, host);
+            if (c < 0)
+            {
+                continue;
+            }
+            ++found;
+            const label k = cells.find(c);
+            if (k < 0)
+            {
+                cells.append(c);
+                counts.append(1);
+            }
+            else
+            {
+                ++counts[k];
+            }
+        }
+
+        if (!found)
+        {
+            // Cannot happen for a centre inside host; keep the volume there
+            cells.append(host);
+            counts.append(1);
+            found = 1;
+        }
+
+        cells_[i].transfer(cells);
+        weights_[i].setSize(counts.size());
+        forAll(counts, k)
+        {
+            weights_[i][k] = scalar(counts[k])/found;
+        }
+    }
+}
+
+
+// ************************************************************************* //

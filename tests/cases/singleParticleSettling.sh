@@ -1,0 +1,98 @@
+#!/bin/bash
+#------------------------------------------------------------------------------
+# One 1 mm, 2500 kg/m3 particle falls 0.05 m through air into water (seed
+# Table 1; cells 4 d, CFD 1e-4 s, DEM 1e-5 s) coupled to LIGGGHTS. Checked
+# against the seed's eq. 19 (tutorials/.../plotSettling.py --check):
+#   terminal velocity 0.1341 m/s within 2 %, and the velocity history, from
+#   one cell below the surface on, within 5 %.
+# The tutorial's box is narrowed to one 20 mm column (5 x 5 x 50 cells) to
+# keep the test short; the walls are 10 particle diameters away.
+#   singleParticleSettling.sh serial|parallel|adjustable
+# parallel:   METIS splits the case into 2, mpirun -np 2 (the particle moves
+#             from one subdomain into the other), reconstructPar
+# adjustable: adjustTimeStep yes (maxDeltaT 5e-4): every CFD step must be a
+#             whole number of DEM steps
+# Also checks the water volume sum(eps alpha V) stays constant (1e-6) while
+# the particle enters the water.
+#------------------------------------------------------------------------------
+mode="${1:-serial}"
+. "${0%/*}/caseFunctions.sh"
+
+copyTutorial singleParticleSettling "settling-$mode"
+
+# narrow column: 0.02 x 0.02 x 0.2 m, particle on its axis
+sed -i 's/^Lx .*/Lx  0.02;/; s/^Ly .*/Ly  0.02;/; s/^nx .*/nx  5;/; s/^ny .*/ny  5;/' \
+    system/blockMeshDict
+sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.2 units box/;
+        s/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.15 units box/' \
+    DEM/in.liggghts
+setEntry system/controlDict endTime 0.25
+setEntry system/controlDict writeInterval 0.05
+
+cat >> system/controlDict <<'FO'
+functions
+{
+    waterVolume
+    {
+        type            volFieldValue;
+        libs            ("libfieldFunctionObjects.so");
+        writeControl    timeStep;
+        writeInterval   1;
+        writeFields     false;
+        log             false;
+        regionType      all;
+        operation       weightedVolIntegrate;
+        weightField     voidfraction;
+        fields          (alpha.water);
+    }
+}
+FO
+
+if [ "$mode" = adjustable ]
+then
+    setEntry system/controlDict adjustTimeStep yes
+    setEntry system/controlDict maxDeltaT 5e-4
+fi
+
+restore0Dir > /dev/null
+runApplication blockMesh || fail "blockMesh"
+runApplication setFields || fail "setFields"
+
+if [ "$mode" = parallel ]
+then
+    runApplication decomposePar || fail "decomposePar (see log.decomposePar)"
+    runParallel interDemFoam || fail "mpirun -np 2 interDemFoam -parallel (see log.interDemFoam)"
+    grep -q "^End" log.interDemFoam || fail "parallel run did not reach the end"
+    runApplication reconstructPar || fail "reconstructPar"
+    [ -f 0.25/lagrangian/demParticles/d ] \
+        || fail "reconstructPar wrote no particles (0.25/lagrangian/demParticles)"
+else
+    runApplication interDemFoam || fail "interDemFoam (see log.interDemFoam)"
+    grep -q "^End" log.interDemFoam || fail "run did not reach the end"
+    [ -f 0.25/lagrangian/demParticles/d ] \
+        || fail "no particles written (0.25/lagrangian/demParticles)"
+fi
+
+grep -q "^Timing split: DEM .* s, CFD .* s, coupling .* s" log.interDemFoam \
+    || fail "no 'Timing split:' line"
+! grep -q "outside the fluid mesh" log.interDemFoam \
+    || fail "the particle left the mesh"
+
+if [ "$mode" = adjustable ]
+then
+    # every deltaT a whole multiple of the DEM step 1e-5 s, and it did grow
+    awk '/^deltaT = / { n = $3/1e-5; r = n - int(n + 0.5); if (r < 0) r = -r;
+                        if (r > 1e-6) { print "deltaT " $3 " = " n " DEM steps"; bad = 1 }
+                        if ($3 > max) max = $3 }
+         END { print "largest deltaT " max " s"; exit bad || max < 2e-4 }' \
+        log.interDemFoam || fail "deltaT not a whole number of DEM steps, or never grew"
+fi
+
+table=postProcessing/waterVolume/0/volFieldValue.dat
+drift=$(maxRelativeDrift "$table") || fail "cannot read $table"
+echo "water volume: max relative drift $drift (limit 1e-6)"
+awk -v d="$drift" 'BEGIN { exit !(d < 1e-6) }' || fail "water volume drift $drift >= 1e-6"
+
+/usr/bin/python3 plotSettling.py . --check --noPlot || fail "settling velocity against eq. 19"
+
+pass "single particle settling ($mode)"
