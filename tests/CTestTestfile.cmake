@@ -25,7 +25,8 @@ set_tests_properties(build.allwmakeOffline PROPERTIES
     LABELS "build;input" TIMEOUT 300 SKIP_RETURN_CODE 77)
 
 # Coupled to LIGGGHTS: one particle from air into water (seed Table 1)
-# against the seed's eq. 19, serial, on 2 ranks, and with adjustTimeStep
+# against the seed's eq. 19, serial, on 2 ranks, with adjustTimeStep, and
+# with explicit momentum coupling
 add_test(case.settlingSerial "bash" "cases/singleParticleSettling.sh" "serial")
 set_tests_properties(case.settlingSerial PROPERTIES LABELS "case;coupled" TIMEOUT 600)
 
@@ -34,6 +35,9 @@ set_tests_properties(case.settlingParallel PROPERTIES LABELS "case;coupled;paral
 
 add_test(case.settlingAdjustable "bash" "cases/singleParticleSettling.sh" "adjustable")
 set_tests_properties(case.settlingAdjustable PROPERTIES LABELS "case;coupled" TIMEOUT 600)
+
+add_test(case.settlingExplicit "bash" "cases/singleParticleSettling.sh" "explicit")
+set_tests_properties(case.settlingExplicit PROPERTIES LABELS "case;coupled" TIMEOUT 600)
 
 add_test(case.couplingInputErrors "bash" "cases/couplingInputErrors.sh")
 set_tests_properties(case.couplingInputErrors PROPERTIES LABELS "case;coupled;input" TIMEOUT 600)

@@ -7,11 +7,12 @@
 #   one cell below the surface on, within 5 %.
 # The tutorial's box is narrowed to one 20 mm column (5 x 5 x 50 cells) to
 # keep the test short; the walls are 10 particle diameters away.
-#   singleParticleSettling.sh serial|parallel|adjustable
+#   singleParticleSettling.sh serial|parallel|adjustable|explicit
 # parallel:   METIS splits the case into 2, mpirun -np 2 (the particle moves
 #             from one subdomain into the other), reconstructPar
 # adjustable: adjustTimeStep yes (maxDeltaT 5e-4): every CFD step must be a
 #             whole number of DEM steps
+# explicit:   momentumCoupling explicit (the others use semiImplicit)
 # Also checks the water volume sum(eps alpha V) stays constant (1e-6) while
 # the particle enters the water.
 #------------------------------------------------------------------------------
@@ -52,6 +53,11 @@ if [ "$mode" = adjustable ]
 then
     setEntry system/controlDict adjustTimeStep yes
     setEntry system/controlDict maxDeltaT 5e-4
+fi
+
+if [ "$mode" = explicit ]
+then
+    sed -i 's/^momentumCoupling .*/momentumCoupling  explicit;/' constant/couplingProperties
 fi
 
 restore0Dir > /dev/null

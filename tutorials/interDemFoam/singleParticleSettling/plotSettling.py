@@ -49,6 +49,18 @@ def acceleration(v, z, d, rho_p, z_surface):
     return ((rho_p - rho_f) * vol * G - drag) / (rho_p * vol)
 
 
+def fluid_force(v, z, d, z_surface):
+    """Upward fluid force of eq. 19 (buoyancy + drag) at speed v down."""
+    rho_f, mu_f = (RHO_WATER, MU_WATER) if z < z_surface else (RHO_AIR, MU_AIR)
+    r = 0.5 * d
+    buoyancy = rho_f * 4.0 / 3.0 * math.pi * r ** 3 * G
+    drag = 0.0
+    if v != 0.0:
+        re = rho_f * abs(v) * d / mu_f
+        drag = 0.5 * math.pi * r * r * rho_f * drag_cd(re) * v * abs(v)
+    return buoyancy + drag
+
+
 def solve_eq19(t_end, z0, d, rho_p, z_surface, dt=1e-6):
     """RK4 for (z, v) of eq. 19 from rest at z0; v downwards positive."""
     n = int(round(t_end / dt))
@@ -100,11 +112,15 @@ def main():
     _, keep = np.unique(data[::-1, 0], return_index=True)
     data = data[::-1][keep]
     t_sim, z_sim, v_sim = data[:, 0], data[:, 1], -data[:, 2]
+    f_sim = data[:, 3] if data.shape[1] > 3 else np.zeros_like(t_sim)
 
     t_ode, z_ode, v_ode = solve_eq19(t_sim[-1], z_sim[0], args.d,
                                      args.rhoP, args.zSurface)
     v_ode_at = np.interp(t_sim, t_ode, v_ode)
     z_ode_at = np.interp(t_sim, t_ode, z_ode)
+    f_ode = np.array([fluid_force(v, z, args.d, args.zSurface)
+                      for v, z in zip(v_ode[::10], z_ode[::10])])
+    weight = args.rhoP * math.pi / 6.0 * args.d ** 3 * G
 
     # Water entry: the particle's centre crosses the free surface
     below = np.nonzero(z_ode < args.zSurface)[0]
@@ -125,8 +141,10 @@ def main():
     rel_deep = np.abs(v_sim[deep] - v_ode_at[deep]) / np.abs(v_ode_at[deep])
 
     out = os.path.join(args.case, "settlingVelocity.dat")
-    np.savetxt(out, np.column_stack([t_sim, v_sim, v_ode_at, z_sim, z_ode_at]),
-               header="t [s]  v simulated [m/s, down]  v eq.19  z simulated [m]  z eq.19",
+    np.savetxt(out, np.column_stack([t_sim, v_sim, v_ode_at, z_sim, z_ode_at,
+                                     f_sim]),
+               header="t [s]  v simulated [m/s, down]  v eq.19  z simulated [m]"
+                      "  z eq.19  fluid force simulated [N, up]",
                fmt="%.8g")
 
     print("water entry: simulated t = %.4f s, eq. 19 t = %.4f s"
@@ -135,6 +153,9 @@ def main():
           % (vt_sim, vt_eq19, 100 * vt_err))
     print("velocity after water entry: max |error| %.2f %%, mean %.2f %%"
           % (100 * rel.max(), 100 * rel.mean()))
+    print("largest fluid force (water entry): simulated %.3g N, eq. 19 %.3g N"
+          " (%.1f and %.1f times the weight)"
+          % (f_sim.max(), f_ode.max(), f_sim.max() / weight, f_ode.max() / weight))
     print("velocity from one cell below the surface: max |error| %.2f %%, mean %.2f %%"
           % (100 * rel_deep.max(), 100 * rel_deep.mean()))
 
@@ -142,14 +163,20 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig, (ax, axf) = plt.subplots(2, 1, figsize=(7, 7), sharex=True,
+                                      gridspec_kw={"height_ratios": [2, 1]})
         ax.plot(t_ode, v_ode, "k-", lw=1.2, label="eq. 19 (seed)")
         ax.plot(t_sim, v_sim, "r--", lw=1.2, label="interDemFoam + LIGGGHTS")
         ax.axvline(t_entry, color="b", lw=0.8, ls=":", label="water entry")
         ax.axhline(vt_eq19, color="0.5", lw=0.8, ls="-.",
                    label="terminal %.3f m/s" % vt_eq19)
-        ax.set_xlabel("t [s]")
         ax.set_ylabel("settling velocity [m/s]")
+        axf.plot(t_ode[::10], f_ode / weight, "k-", lw=1.2, label="eq. 19")
+        axf.plot(t_sim, f_sim / weight, "r--", lw=1.2, label="simulated")
+        axf.set_xlabel("t [s]")
+        axf.set_ylabel("fluid force / weight")
+        axf.legend()
+        axf.grid(alpha=0.3)
         ax.set_title("1 mm, 2500 kg/m$^3$ particle, air $\\to$ water (cells 4 d)")
         ax.legend()
         ax.grid(alpha=0.3)
