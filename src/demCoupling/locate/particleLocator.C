@@ -98,6 +98,11 @@ void Foam::demCoupling::particleLocator::locate(particleData& particles)
         if (host[i] == nProcs)
         {
             ++lost_;
+            particles.hostProc[i] = -1;
+        }
+        else
+        {
+            particles.hostProc[i] = host[i];
         }
         if (host[i] != Pstream::myProcNo())
         {

@@ -158,33 +158,10 @@ void Foam::demCoupling::particleCloud::updateParticles()
 }
 
 
-Foam::demCoupling::particleFluidState
-Foam::demCoupling::particleCloud::fluidState
-(
-    const label i,
-    const volScalarField& mu,
-    const volVectorField& gradP
-) const
-{
-    const voidFractionModel& vf = voidFraction_();
-
-    particleFluidState s;
-    s.Up = particles_.velocity[i];
-    s.omega = particles_.omega[i];
-    s.d = particles_.diameter[i];
-    s.rhoP = particles_.density[i];
-    s.Uf = vf.average(i, U_);
-    s.eps = vf.average(i, voidfraction_);
-    s.rhoF = vf.average(i, rho_);
-    s.muF = vf.average(i, mu);
-    s.gradP = vf.average(i, gradP);
-    return s;
-}
-
-
 void Foam::demCoupling::particleCloud::computeForces()
 {
     const label n = particles_.size();
+    const voidFractionModel& vf = voidFraction_();
 
     fluidForce_.setSize(n);
     K_.setSize(n);
@@ -206,13 +183,51 @@ void Foam::demCoupling::particleCloud::computeForces()
       - fvc::reconstruct(mixture_.surfaceTensionForce()*mesh_.magSf())
     );
 
-    forAll(particles_.cell, i)
+    // The fluid each particle sees: the weighted average over its cells,
+    // summed over the processors that hold some of them
+    // (U 3, eps, rho, mu, grad(p) 3)
+    constexpr label nq = 9;
+    scalarList sums(nq*n, Zero);
+    forAll(particles_.position, i)
     {
-        if (particles_.cell[i] < 0)
+        if (vf.cells(i).empty())
         {
             continue;
         }
-        const particleFluidState s(fluidState(i, mu, gradP));
+        const vector u(vf.average(i, U_));
+        const vector gp(vf.average(i, gradP));
+        scalar* q = &sums[nq*i];
+        q[0] = u.x(); q[1] = u.y(); q[2] = u.z();
+        q[3] = vf.average(i, voidfraction_);
+        q[4] = vf.average(i, rho_);
+        q[5] = vf.average(i, mu);
+        q[6] = gp.x(); q[7] = gp.y(); q[8] = gp.z();
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(sums, plusEqOp<scalar>());
+        Pstream::listCombineScatter(sums);
+    }
+
+    // Forces: every processor that holds cells of a particle computes the
+    // same force from the same (reduced) fluid state
+    forAll(particles_.position, i)
+    {
+        if (vf.cells(i).empty())
+        {
+            continue;
+        }
+        const scalar* q = &sums[nq*i];
+        particleFluidState s;
+        s.Up = particles_.velocity[i];
+        s.omega = particles_.omega[i];
+        s.d = particles_.diameter[i];
+        s.rhoP = particles_.density[i];
+        s.Uf = vector(q[0], q[1], q[2]);
+        s.eps = q[3];
+        s.rhoF = q[4];
+        s.muF = q[5];
+        s.gradP = vector(q[6], q[7], q[8]);
         Uf_[i] = s.Uf;
 
         for (const forceModel& model : forces_)
@@ -232,10 +247,10 @@ void Foam::demCoupling::particleCloud::computeForces()
                 << "Non-finite fluid force " << fluidForce_[i]
                 << " on DEM particle " << particles_.tag[i]
                 << " at " << particles_.position[i]
-                << " (cell " << particles_.cell[i] << ", time "
-                << mesh_.time().timeName() << "): fluid velocity " << s.Uf
-                << ", eps " << s.eps << ", rho " << s.rhoF
-                << ", mu " << s.muF << ", grad(p) " << s.gradP << nl
+                << " (time " << mesh_.time().timeName() << "): fluid"
+                << " velocity " << s.Uf << ", eps " << s.eps
+                << ", rho " << s.rhoF << ", mu " << s.muF
+                << ", grad(p) " << s.gradP << nl
                 << "    Results up to the last write time are kept."
                 << exit(FatalError);
         }
@@ -352,8 +367,16 @@ void Foam::demCoupling::particleCloud::evolve()
     // 5-6. fluid at the particles, forces, fluid sources
     computeForces();
 
-    // 7. forces back to the DEM
-    engine_->setForces(fluidForce_, List<vector>());
+    // 7. forces back to the DEM (summed over processors: the host's only)
+    List<vector> hostForce(fluidForce_);
+    forAll(hostForce, i)
+    {
+        if (particles_.hostProc[i] != Pstream::myProcNo())
+        {
+            hostForce[i] = Zero;
+        }
+    }
+    engine_->setForces(hostForce, List<vector>());
 
     couplingTime_ += clock_.elapsedTime() - t1;
 }

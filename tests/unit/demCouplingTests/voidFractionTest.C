@@ -48,6 +48,7 @@ particleData randomParticles
         p.diameter[i] = dMin + (dMax - dMin)*rnd.sample01<scalar>();
         p.density[i] = 2500;
         p.cell[i] = mesh.findCell(p.position[i]);
+        p.hostProc[i] = p.cell[i] >= 0 ? 0 : -1;
     }
     return p;
 }
@@ -152,6 +153,7 @@ TEST(dividedVoidFraction, ConservesVolumeAndSplitsAcrossFaces)
     q.resize(1);
     q.position[0] = mesh.C()[62];
     q.cell[0] = 62;
+    q.hostProc[0] = 0;
     q.diameter[0] = 0.5*dx;
     model->update(q, *eps);
     ASSERT_EQ(model->cells(0).size(), 1);
@@ -171,4 +173,158 @@ TEST(dividedVoidFraction, ConservesVolumeAndSplitsAcrossFaces)
         if (model->cells(0)[k] == across) wAcross += model->weights(0)[k];
     }
     EXPECT_NEAR(wAcross, 5.0/32.0, 0.03);
+}
+
+
+namespace
+{
+dictionary virtualSphereDict(const scalar minEps)
+{
+    dictionary dict(modelDict("virtualSphere", minEps));
+    dictionary coeffs;
+    coeffs.add("diameterRatio", 4.0);
+    coeffs.add("sizeThreshold", 0.25);
+    dict.add("virtualSphereCoeffs", coeffs);
+    return dict;
+}
+
+// Every cell whose centre is within R of x, and the host: the reference set
+labelHashSet bruteForceSphere
+(
+    const fvMesh& mesh, const point& x, const scalar R, const label host
+)
+{
+    labelHashSet cells;
+    forAll(mesh.C(), c)
+    {
+        if (magSqr(mesh.C()[c] - x) <= sqr(R)) cells.insert(c);
+    }
+    cells.insert(host);
+    return cells;
+}
+}
+
+
+// Each model: weights of every particle sum to one (exact volume
+// conservation) for particles of 0.1 ... 2 dx; where no floor bites the eps
+// field holds exactly the particles' volume
+TEST(voidFractionModels, ConserveVolumeForParticlesUpToTwoCells)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar dx = Foam::cbrt(mesh.V()[0]);
+
+    for (const word model : {"centre", "divided", "virtualSphere"})
+    {
+        const particleData p = randomParticles(mesh, 12, 0.1*dx, 2*dx);
+        auto vf = voidFractionModel::New
+        (
+            model == "virtualSphere"
+          ? virtualSphereDict(1e-6) : modelDict(model, 1e-6),
+            mesh
+        );
+        auto eps = newEps(mesh);
+        vf->update(p, *eps);
+
+        scalar Vp = 0, Vweighted = 0;
+        forAll(p.diameter, i)
+        {
+            Vp += p.volume(i);
+            EXPECT_NEAR(sum(vf->weights(i)), 1.0, 1e-12) << model << " " << i;
+            Vweighted += sum(vf->weights(i))*p.volume(i);
+        }
+        EXPECT_NEAR(Vweighted, Vp, 1e-12*Vp) << model;
+
+        // One particle at a time: no floor, eps holds its volume exactly
+        forAll(p.diameter, i)
+        {
+            particleData one;
+            one.resize(1);
+            one.position[0] = p.position[i];
+            one.diameter[0] = p.diameter[i];
+            one.cell[0] = p.cell[i];
+            one.hostProc[0] = 0;
+            vf->update(one, *eps);
+            if (vf->floorHits() == 0)
+            {
+                EXPECT_NEAR
+                (
+                    gSum((1 - eps->primitiveField())*mesh.V()),
+                    one.volume(0),
+                    1e-12*one.volume(0)
+                ) << model << " particle " << i;
+            }
+        }
+    }
+}
+
+
+// Virtual sphere: a particle at a corner shared by 8 cells, and one next to
+// a wall, spread over exactly the cells whose centres lie within 2 d (the
+// host always), each with the same solid fraction (weight V_c / V_VS)
+TEST(virtualSphereVoidFraction, CellSetStraddlingCellsAndNearAWall)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar dx = Foam::cbrt(mesh.V()[0]);
+    auto vf = voidFractionModel::New(virtualSphereDict(0.05), mesh);
+    auto eps = newEps(mesh);
+
+    const point corner = mesh.C()[62] + 0.5*vector(dx, dx, dx);
+    const point nearWall = point(0.1*dx, 0.5*mesh.bounds().span().y(), 0.005);
+
+    for (const point& x : {corner, nearWall})
+    {
+        particleData p;
+        p.resize(1);
+        p.position[0] = x;
+        p.diameter[0] = 0.6*dx;              // > 0.25 dx: spread
+        p.cell[0] = mesh.findCell(x);
+        p.hostProc[0] = 0;
+        ASSERT_GE(p.cell[0], 0);
+        vf->update(p, *eps);
+
+        const labelHashSet expected
+        (
+            bruteForceSphere(mesh, x, 2*0.6*dx, p.cell[0])
+        );
+        const labelList& cells = vf->cells(0);
+        EXPECT_EQ(label(cells.size()), expected.size()) << x.x() << " " << x.y();
+        scalar VVS = 0;
+        for (const label c : cells)
+        {
+            EXPECT_TRUE(expected.found(c)) << "cell " << c;
+            VVS += mesh.V()[c];
+        }
+        // equal solid fraction V_p / V_VS in every cell of the set
+        for (const label c : cells)
+        {
+            EXPECT_NEAR(1 - (*eps)[c], p.volume(0)/VVS, 1e-12);
+        }
+        EXPECT_NEAR(gSum((1 - eps->primitiveField())*mesh.V()),
+                    p.volume(0), 1e-12*p.volume(0));
+    }
+
+    // at the corner of 8 cells with R = 1.2 dx: exactly those 8 cells
+    {
+        particleData p;
+        p.resize(1);
+        p.position[0] = corner;
+        p.diameter[0] = 0.6*dx;
+        p.cell[0] = mesh.findCell(corner);
+        p.hostProc[0] = 0;
+        vf->update(p, *eps);
+        EXPECT_EQ(vf->cells(0).size(), 8);
+    }
+
+    // below the threshold (d = 0.2 dx <= 0.25 dx): the centre model
+    {
+        particleData p;
+        p.resize(1);
+        p.position[0] = corner - vector::uniform(0.1*dx);
+        p.diameter[0] = 0.2*dx;
+        p.cell[0] = mesh.findCell(p.position[0]);
+        p.hostProc[0] = 0;
+        vf->update(p, *eps);
+        ASSERT_EQ(vf->cells(0).size(), 1);
+        EXPECT_EQ(vf->cells(0)[0], p.cell[0]);
+    }
 }

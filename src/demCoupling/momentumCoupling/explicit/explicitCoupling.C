@@ -51,9 +51,9 @@ void Foam::demCoupling::momentumCouplingModels::explicitCoupling::assemble
 
     forAll(particles.cell, i)
     {
-        if (particles.cell[i] < 0)
+        if (voidFraction.cells(i).empty())
         {
-            continue;
+            continue;   // none of its cells on this processor
         }
         const vector Fi
         (

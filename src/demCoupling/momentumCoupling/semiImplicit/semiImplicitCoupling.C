@@ -53,9 +53,9 @@ void Foam::demCoupling::momentumCouplingModels::semiImplicitCoupling::assemble
 
     forAll(particles.cell, i)
     {
-        if (particles.cell[i] < 0)
+        if (voidFraction.cells(i).empty())
         {
-            continue;
+            continue;   // none of its cells on this processor
         }
         const scalar Vp = particles.volume(i);
         const labelList& cells = voidFraction.cells(i);

@@ -84,31 +84,52 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
     const particleData& particles
 )
 {
-    forAll(particles.cell, i)
+    boundBox localBounds(mesh_.points(), false);
+    localBounds.inflate(1e-6);
+
+    forAll(particles.position, i)
     {
         const label host = particles.cell[i];
         cells_[i].clear();
         weights_[i].clear();
-        if (host < 0)
+        if (particles.hostProc[i] < 0)
         {
-            continue;
+            continue;   // outside the whole mesh: no volume, no force
         }
 
         const scalar r = 0.5*particles.diameter[i];
         const point& x0 = particles.position[i];
 
+        // Another processor's particle: only if it reaches this mesh
+        if
+        (
+            host < 0
+         && !localBounds.overlaps(boundBox(x0 - vector::uniform(r),
+                                           x0 + vector::uniform(r)))
+        )
+        {
+            continue;
+        }
+
         // Points per cell (a particle touches few cells: linear search)
         DynamicList<label> cells(8);
-        DynamicList<label> counts(8);
-        label found = 0;
+        DynamicList<scalar> counts(8);
         for (const vector& u : unitPoints_)
         {
-            const label c = findCell(x0 + r*u, host);
+            const point x(x0 + r*u);
+            label c = -1;
+            if (host >= 0)
+            {
+                c = findCell(x, host);
+            }
+            else if (localBounds.contains(x))
+            {
+                c = mesh_.findCell(x, polyMesh::CELL_TETS);
+            }
             if (c < 0)
             {
                 continue;
             }
-            ++found;
             const label k = cells.find(c);
             if (k < 0)
             {
@@ -117,25 +138,23 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
             }
             else
             {
-                ++counts[k];
+                counts[k] += 1;
             }
         }
 
-        if (!found)
+        if (host >= 0 && cells.empty())
         {
-            // Cannot happen for a centre inside host; keep the volume there
+            // Every point on other processors: keep a share on the host
             cells.append(host);
             counts.append(1);
-            found = 1;
         }
 
         cells_[i].transfer(cells);
-        weights_[i].setSize(counts.size());
-        forAll(counts, k)
-        {
-            weights_[i][k] = scalar(counts[k])/found;
-        }
+        weights_[i].transfer(counts);
     }
+
+    // A point outside every processor's mesh (beyond a wall) is left out
+    normaliseWeights();
 }
 
 

@@ -60,6 +60,31 @@ Foam::demCoupling::voidFractionModel::New
 }
 
 
+void Foam::demCoupling::voidFractionModel::normaliseWeights()
+{
+    scalarList total(weights_.size(), Zero);
+    forAll(weights_, i)
+    {
+        for (const scalar w : weights_[i]) { total[i] += w; }
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(total, plusEqOp<scalar>());
+        Pstream::listCombineScatter(total);
+    }
+    forAll(weights_, i)
+    {
+        if (total[i] > 0)
+        {
+            for (scalar& w : weights_[i])
+            {
+                w /= total[i];
+            }
+        }
+    }
+}
+
+
 void Foam::demCoupling::voidFractionModel::update
 (
     const particleData& particles,
