@@ -41,3 +41,8 @@ set_tests_properties(case.settlingExplicit PROPERTIES LABELS "case;coupled" TIME
 
 add_test(case.couplingInputErrors "bash" "cases/couplingInputErrors.sh")
 set_tests_properties(case.couplingInputErrors PROPERTIES LABELS "case;coupled;input" TIMEOUT 600)
+
+# The voidfraction field of a cell-sized particle bed split by METIS: 2 ranks
+# = serial, particle volume conserved (centre, divided, virtualSphere)
+add_test(case.voidFractionParallel "bash" "cases/voidFractionParallel.sh")
+set_tests_properties(case.voidFractionParallel PROPERTIES LABELS "case;coupled;parallel" TIMEOUT 600)
