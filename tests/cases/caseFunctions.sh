@@ -37,3 +37,14 @@ maxRelativeDrift()
         d = ($2 - v0)/v0; if (d < 0) d = -d; if (d > m) m = d
     } END { if (!n) { print "nan"; exit 1 } printf "%.3e\n", m }' "$1"
 }
+
+# The singleParticleSettling tutorial narrowed to one 20 mm column
+# (5 x 5 x 50 cells of 4 mm), the particle on its axis: run in the case
+narrowSettlingColumn()
+{
+    sed -i 's/^Lx .*/Lx  0.02;/; s/^Ly .*/Ly  0.02;/; s/^nx .*/nx  5;/; s/^ny .*/ny  5;/' \
+        system/blockMeshDict
+    sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.2 units box/;
+            s/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.15 units box/' \
+        DEM/in.liggghts
+}

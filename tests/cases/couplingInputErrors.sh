@@ -12,11 +12,7 @@
 . "${0%/*}/caseFunctions.sh"
 
 copyTutorial singleParticleSettling couplingInputErrors
-sed -i 's/^Lx .*/Lx  0.02;/; s/^Ly .*/Ly  0.02;/; s/^nx .*/nx  5;/; s/^ny .*/ny  5;/' \
-    system/blockMeshDict
-sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.2 units box/;
-        s/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.15 units box/' \
-    DEM/in.liggghts
+narrowSettlingColumn
 setEntry system/controlDict endTime 3e-4
 restore0Dir > /dev/null
 runApplication blockMesh || fail "blockMesh"

@@ -22,11 +22,7 @@ mode="${1:-serial}"
 copyTutorial singleParticleSettling "settling-$mode"
 
 # narrow column: 0.02 x 0.02 x 0.2 m, particle on its axis
-sed -i 's/^Lx .*/Lx  0.02;/; s/^Ly .*/Ly  0.02;/; s/^nx .*/nx  5;/; s/^ny .*/ny  5;/' \
-    system/blockMeshDict
-sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.2 units box/;
-        s/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.15 units box/' \
-    DEM/in.liggghts
+narrowSettlingColumn
 setEntry system/controlDict endTime 0.25
 setEntry system/controlDict writeInterval 0.05
 

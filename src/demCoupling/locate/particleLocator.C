@@ -34,27 +34,36 @@ Foam::label Foam::demCoupling::particleLocator::findCell
     {
         return -1;
     }
+    return findCellNear(mesh_, p, hint);
+}
 
-    if (hint >= 0 && hint < mesh_.nCells())
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::demCoupling::particleLocator::findCellNear
+(
+    const polyMesh& mesh,
+    const point& p,
+    const label hint
+)
+{
+    if (hint >= 0 && hint < mesh.nCells())
     {
-        if (mesh_.pointInCell(p, hint, polyMesh::CELL_TETS))
+        if (mesh.pointInCell(p, hint, polyMesh::CELL_TETS))
         {
             return hint;
         }
-        for (const label nbr : mesh_.cellCells()[hint])
+        for (const label nbr : mesh.cellCells()[hint])
         {
-            if (mesh_.pointInCell(p, nbr, polyMesh::CELL_TETS))
+            if (mesh.pointInCell(p, nbr, polyMesh::CELL_TETS))
             {
                 return nbr;
             }
         }
     }
-
-    return mesh_.findCell(p, polyMesh::CELL_TETS);
+    return mesh.findCell(p, polyMesh::CELL_TETS);
 }
 
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 void Foam::demCoupling::particleLocator::locate(particleData& particles)
 {

@@ -112,6 +112,7 @@ Foam::demCoupling::particleCloud::particleCloud
     reactingForce_(),
     Uf_(),
     demSteps_(0),
+    lastDemCount_(0),
     clock_(),
     demTime_(0),
     couplingTime_(0),
@@ -145,6 +146,7 @@ Foam::demCoupling::particleCloud::particleCloud
     // The particles' volume from the start, so that time 0 sees it
     updateParticles();
     voidfraction_.oldTime() = voidfraction_;
+    lastDemCount_ = particles_.size();
 }
 
 
@@ -398,6 +400,15 @@ void Foam::demCoupling::particleCloud::report()
         Info<< "Particles: " << particles_.size() << " in the DEM, "
             << hosted << " in the mesh, " << demSteps_ << " DEM steps,"
             << " min(voidfraction) " << gMin(voidfraction_) << endl;
+
+        if (particles_.size() < lastDemCount_)
+        {
+            Info<< "Warning: " << lastDemCount_ - particles_.size()
+                << " particle(s) left the DEM domain at t = "
+                << runTime.timeName() << " s (LIGGGHTS dropped them); "
+                << particles_.size() << " remain" << endl;
+        }
+        lastDemCount_ = particles_.size();
 
         if (locator_->lost())
         {

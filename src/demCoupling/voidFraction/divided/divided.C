@@ -1,5 +1,6 @@
 #include "divided.H"
 #include "addToRunTimeSelectionTable.H"
+#include "particleLocator.H"
 
 namespace Foam
 {
@@ -58,27 +59,6 @@ Foam::demCoupling::voidFractionModels::divided::divided
 }
 
 
-Foam::label Foam::demCoupling::voidFractionModels::divided::findCell
-(
-    const point& p,
-    const label host
-) const
-{
-    if (mesh_.pointInCell(p, host, polyMesh::CELL_TETS))
-    {
-        return host;
-    }
-    for (const label nbr : mesh_.cellCells()[host])
-    {
-        if (mesh_.pointInCell(p, nbr, polyMesh::CELL_TETS))
-        {
-            return nbr;
-        }
-    }
-    return mesh_.findCell(p, polyMesh::CELL_TETS);
-}
-
-
 void Foam::demCoupling::voidFractionModels::divided::distribute
 (
     const particleData& particles
@@ -118,13 +98,9 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
         {
             const point x(x0 + r*u);
             label c = -1;
-            if (host >= 0)
+            if (host >= 0 || localBounds.contains(x))
             {
-                c = findCell(x, host);
-            }
-            else if (localBounds.contains(x))
-            {
-                c = mesh_.findCell(x, polyMesh::CELL_TETS);
+                c = particleLocator::findCellNear(mesh_, x, host);
             }
             if (c < 0)
             {
