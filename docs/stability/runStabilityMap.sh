@@ -12,7 +12,7 @@
 cd "${0%/*}" || exit 1
 [ -n "$WM_PROJECT_DIR" ] || . ../../etc/bashrc || exit 1
 
-models="${1:-centre divided virtualSphere}"
+models="${1:-centre divided virtualSphere diffusion}"
 ratios="${2:-1 1.25 1.5 2 3 4}"
 template=../../tutorials/interDemFoam/settlingMeshStudy/template
 d=0.001

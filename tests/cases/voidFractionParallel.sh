@@ -22,7 +22,7 @@ internalValues()
 Vbox=1.6e-05
 Vp=$(awk 'BEGIN { printf "%.15g\n", 20*3.14159265358979*0.004^3/6 }')
 
-for model in centre divided virtualSphere
+for model in centre divided virtualSphere diffusion
 do
     for mode in serial parallel
     do

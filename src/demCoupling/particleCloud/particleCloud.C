@@ -185,25 +185,25 @@ void Foam::demCoupling::particleCloud::computeForces()
       - fvc::reconstruct(mixture_.surfaceTensionForce()*mesh_.magSf())
     );
 
-    // The fluid each particle sees: the weighted average over its cells,
-    // summed over the processors that hold some of them
-    // (U 3, eps, rho, mu, grad(p) 3)
+    // The fluid each particle sees: the weighted average over its cells
+    // (through the model's kernel), summed over the processors that hold
+    // some of them: U 3, eps, rho, mu, grad(p) 3
+    const List<vector> Ui(vf.sample(U_));
+    const scalarList epsi(vf.sample(voidfraction_));
+    const scalarList rhoi(vf.sample(rho_));
+    const scalarList mui(vf.sample(mu));
+    const List<vector> gradPi(vf.sample(gradP));
+
     constexpr label nq = 9;
     scalarList sums(nq*n, Zero);
     forAll(particles_.position, i)
     {
-        if (vf.cells(i).empty())
-        {
-            continue;
-        }
-        const vector u(vf.average(i, U_));
-        const vector gp(vf.average(i, gradP));
         scalar* q = &sums[nq*i];
-        q[0] = u.x(); q[1] = u.y(); q[2] = u.z();
-        q[3] = vf.average(i, voidfraction_);
-        q[4] = vf.average(i, rho_);
-        q[5] = vf.average(i, mu);
-        q[6] = gp.x(); q[7] = gp.y(); q[8] = gp.z();
+        q[0] = Ui[i].x(); q[1] = Ui[i].y(); q[2] = Ui[i].z();
+        q[3] = epsi[i];
+        q[4] = rhoi[i];
+        q[5] = mui[i];
+        q[6] = gradPi[i].x(); q[7] = gradPi[i].y(); q[8] = gradPi[i].z();
     }
     if (Pstream::parRun())
     {

@@ -76,7 +76,7 @@ def main():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     models = sorted({r[0] for r in rows})
-    markers = {"centre": "o", "divided": "s", "virtualSphere": "^"}
+    markers = {"centre": "o", "divided": "s", "virtualSphere": "^", "diffusion": "D"}
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for mname in models:

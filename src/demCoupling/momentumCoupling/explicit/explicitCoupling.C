@@ -41,39 +41,25 @@ void Foam::demCoupling::momentumCouplingModels::explicitCoupling::assemble
     volVectorField& fExplicit
 ) const
 {
-    const scalarField& V = mesh_.V();
-
-    scalarField solidVolume(mesh_.nCells(), 0);
-    vectorField momentum(mesh_.nCells(), Zero);
-
-    Ksl.primitiveFieldRef() = 0;
-    fExplicit.primitiveFieldRef() = Zero;
-
-    forAll(particles.cell, i)
+    const label n = particles.size();
+    List<vector> F(n), VpUp(n);
+    scalarList Vp(n);
+    forAll(F, i)
     {
-        if (voidFraction.cells(i).empty())
-        {
-            continue;   // none of its cells on this processor
-        }
-        const vector Fi
-        (
-            K[i]*(Uf[i] - particles.velocity[i]) + Fexplicit[i]
-        );
-        const scalar Vp = particles.volume(i);
-        const labelList& cells = voidFraction.cells(i);
-        const scalarList& w = voidFraction.weights(i);
-        forAll(cells, k)
-        {
-            const label c = cells[k];
-            fExplicit[c] -= w[k]*Fi/V[c];
-            solidVolume[c] += w[k]*Vp;
-            momentum[c] += w[k]*Vp*particles.velocity[i];
-        }
+        F[i] = K[i]*(Uf[i] - particles.velocity[i]) + Fexplicit[i];
+        Vp[i] = particles.volume(i);
+        VpUp[i] = Vp[i]*particles.velocity[i];
     }
 
+    Ksl.primitiveFieldRef() = 0;
+    fExplicit.primitiveFieldRef() = -voidFraction.spread(F);
+
+    // Volume-weighted particle velocity (for post-processing)
+    const scalarField solid(voidFraction.spread(Vp));
+    const vectorField momentum(voidFraction.spread(VpUp));
     forAll(Us, c)
     {
-        Us[c] = solidVolume[c] > 0 ? momentum[c]/solidVolume[c] : Zero;
+        Us[c] = solid[c] > SMALL ? momentum[c]/solid[c] : Zero;
     }
 
     Ksl.correctBoundaryConditions();

@@ -42,45 +42,31 @@ void Foam::demCoupling::momentumCouplingModels::semiImplicitCoupling::assemble
     volVectorField& fExplicit
 ) const
 {
-    const scalarField& V = mesh_.V();
-
-    scalarField KV(mesh_.nCells(), 0);          // sum w K
-    vectorField KVv(mesh_.nCells(), Zero);      // sum w K v
-    scalarField solidVolume(mesh_.nCells(), 0);
-    vectorField momentum(mesh_.nCells(), Zero);
-
-    fExplicit.primitiveFieldRef() = Zero;
-
-    forAll(particles.cell, i)
+    const label n = particles.size();
+    List<vector> Kv(n), VpUp(n);
+    scalarList Vp(n);
+    forAll(Kv, i)
     {
-        if (voidFraction.cells(i).empty())
-        {
-            continue;   // none of its cells on this processor
-        }
-        const scalar Vp = particles.volume(i);
-        const labelList& cells = voidFraction.cells(i);
-        const scalarList& w = voidFraction.weights(i);
-        forAll(cells, k)
-        {
-            const label c = cells[k];
-            KV[c] += w[k]*K[i];
-            KVv[c] += w[k]*K[i]*particles.velocity[i];
-            fExplicit[c] -= w[k]*Fexplicit[i]/V[c];
-            solidVolume[c] += w[k]*Vp;
-            momentum[c] += w[k]*Vp*particles.velocity[i];
-        }
+        Kv[i] = K[i]*particles.velocity[i];
+        Vp[i] = particles.volume(i);
+        VpUp[i] = Vp[i]*particles.velocity[i];
     }
 
-    forAll(Ksl, c)
+    Ksl.primitiveFieldRef() = voidFraction.spread(K);
+    fExplicit.primitiveFieldRef() = -voidFraction.spread(Fexplicit);
+
+    const vectorField KvCell(voidFraction.spread(Kv));
+    const scalarField solid(voidFraction.spread(Vp));
+    const vectorField momentum(voidFraction.spread(VpUp));
+    forAll(Us, c)
     {
-        Ksl[c] = KV[c]/V[c];
-        if (KV[c] > 0)
+        if (Ksl[c] > SMALL)
         {
-            Us[c] = KVv[c]/KV[c];
+            Us[c] = KvCell[c]/Ksl[c];
         }
-        else if (solidVolume[c] > 0)
+        else if (solid[c] > SMALL)
         {
-            Us[c] = momentum[c]/solidVolume[c];
+            Us[c] = momentum[c]/solid[c];
         }
         else
         {

@@ -95,18 +95,12 @@ void Foam::demCoupling::voidFractionModel::update
     weights_.setSize(particles.size());
     distribute(particles);
 
-    scalarField solid(mesh_.nCells(), 0);
-    const scalarField& V = mesh_.V();
-
-    forAll(cells_, i)
+    scalarList Vp(particles.size());
+    forAll(Vp, i)
     {
-        const scalar Vp = particles.volume(i);
-        forAll(cells_[i], k)
-        {
-            const label c = cells_[i][k];
-            solid[c] += weights_[i][k]*Vp/V[c];
-        }
+        Vp[i] = particles.volume(i);
     }
+    const scalarField solid(spread(Vp));
 
     floorHits_ = 0;
     scalarField& epsI = eps.primitiveFieldRef();

@@ -1,0 +1,125 @@
+#include "diffusion.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvm.H"
+#include "zeroGradientFvPatchFields.H"
+
+namespace Foam
+{
+namespace demCoupling
+{
+namespace voidFractionModels
+{
+    defineTypeNameAndDebug(diffusion, 0);
+    addToRunTimeSelectionTable(voidFractionModel, diffusion, dictionary);
+}
+}
+}
+
+
+Foam::demCoupling::voidFractionModels::diffusion::diffusion
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    voidFractionModel(dict, mesh),
+    bandwidth_
+    (
+        dict.subDict("diffusionCoeffs").getCheck<scalar>
+        (
+            "bandwidth", [](const scalar b) { return b > 0; }
+        )
+    ),
+    nSteps_
+    (
+        dict.subDict("diffusionCoeffs").getCheck<label>
+        (
+            "nSteps", [](const label n) { return n >= 1; }
+        )
+    ),
+    solverControls_()
+{
+    solverControls_.add("solver", "PCG");
+    solverControls_.add("preconditioner", "DIC");
+    solverControls_.add("tolerance", 1e-14);
+    solverControls_.add("relTol", 0.0);
+    solverControls_.add("maxIter", 1000);
+
+    Info<< "    diffusion: bandwidth " << bandwidth_ << " m, " << nSteps_
+        << " implicit steps" << endl;
+}
+
+
+void Foam::demCoupling::voidFractionModels::diffusion::distribute
+(
+    const particleData& particles
+)
+{
+    forAll(particles.cell, i)
+    {
+        const label host = particles.cell[i];
+        if (host < 0)
+        {
+            cells_[i].clear();
+            weights_[i].clear();
+        }
+        else
+        {
+            cells_[i] = labelList(1, host);
+            weights_[i] = scalarList(1, 1.0);
+        }
+    }
+}
+
+
+template<class Type>
+void Foam::demCoupling::voidFractionModels::diffusion::smoothField
+(
+    Field<Type>& f
+) const
+{
+    typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
+
+    fieldType phi
+    (
+        IOobject
+        (
+            "voidFractionSmoothing_" + word(pTraits<Type>::typeName),
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensioned<Type>(dimless, Zero),
+        zeroGradientFvPatchField<Type>::typeName
+    );
+    phi.primitiveFieldRef() = f;
+    phi.correctBoundaryConditions();
+
+    const dimensionedScalar dT
+    (
+        "dT", sqr(dimLength), sqr(bandwidth_)/4/nSteps_
+    );
+    const dimensionedScalar one("one", dimless, 1.0);
+
+    // The solver's per-solve report would flood the log
+    const int oldDebug = SolverPerformance<Type>::debug;
+    SolverPerformance<Type>::debug = 0;
+    for (label step = 0; step < nSteps_; ++step)
+    {
+        const fieldType phi0("phi0", phi);
+        fvMatrix<Type> eqn
+        (
+            fvm::Sp(one, phi) - fvm::laplacian(dT, phi) == phi0
+        );
+        eqn.solve(solverControls_);
+    }
+    SolverPerformance<Type>::debug = oldDebug;
+
+    f = phi.primitiveField();
+}
+
+
+// ************************************************************************* //
