@@ -41,26 +41,17 @@ void Foam::demCoupling::momentumCouplingModels::explicitCoupling::assemble
     volVectorField& fExplicit
 ) const
 {
-    const label n = particles.size();
-    List<vector> F(n), VpUp(n);
-    scalarList Vp(n);
+    List<vector> F(particles.size());
     forAll(F, i)
     {
         F[i] = K[i]*(Uf[i] - particles.velocity[i]) + Fexplicit[i];
-        Vp[i] = particles.volume(i);
-        VpUp[i] = Vp[i]*particles.velocity[i];
     }
 
     Ksl.primitiveFieldRef() = 0;
     fExplicit.primitiveFieldRef() = -voidFraction.spread(F);
 
     // Volume-weighted particle velocity (for post-processing)
-    const scalarField solid(voidFraction.spread(Vp));
-    const vectorField momentum(voidFraction.spread(VpUp));
-    forAll(Us, c)
-    {
-        Us[c] = solid[c] > SMALL ? momentum[c]/solid[c] : Zero;
-    }
+    Us.primitiveFieldRef() = volumeWeightedVelocity(particles, voidFraction);
 
     Ksl.correctBoundaryConditions();
     Us.correctBoundaryConditions();

@@ -48,4 +48,35 @@ Foam::demCoupling::momentumCouplingModel::New
 }
 
 
+Foam::tmp<Foam::vectorField>
+Foam::demCoupling::momentumCouplingModel::volumeWeightedVelocity
+(
+    const particleData& particles,
+    const voidFractionModel& voidFraction
+) const
+{
+    const label n = particles.size();
+    scalarList Vp(n);
+    List<vector> VpUp(n);
+    forAll(Vp, i)
+    {
+        Vp[i] = particles.volume(i);
+        VpUp[i] = Vp[i]*particles.velocity[i];
+    }
+    const scalarField solid(voidFraction.spread(Vp));
+    const vectorField momentum(voidFraction.spread(VpUp));
+
+    auto tUs = tmp<vectorField>::New(solid.size(), Zero);
+    vectorField& Us = tUs.ref();
+    forAll(Us, c)
+    {
+        if (solid[c] > SMALL)
+        {
+            Us[c] = momentum[c]/solid[c];
+        }
+    }
+    return tUs;
+}
+
+
 // ************************************************************************* //

@@ -42,36 +42,21 @@ void Foam::demCoupling::momentumCouplingModels::semiImplicitCoupling::assemble
     volVectorField& fExplicit
 ) const
 {
-    const label n = particles.size();
-    List<vector> Kv(n), VpUp(n);
-    scalarList Vp(n);
+    List<vector> Kv(particles.size());
     forAll(Kv, i)
     {
         Kv[i] = K[i]*particles.velocity[i];
-        Vp[i] = particles.volume(i);
-        VpUp[i] = Vp[i]*particles.velocity[i];
     }
 
     Ksl.primitiveFieldRef() = voidFraction.spread(K);
     fExplicit.primitiveFieldRef() = -voidFraction.spread(Fexplicit);
 
+    // Drag-weighted particle velocity; volume-weighted where no drag
     const vectorField KvCell(voidFraction.spread(Kv));
-    const scalarField solid(voidFraction.spread(Vp));
-    const vectorField momentum(voidFraction.spread(VpUp));
+    const vectorField UsVolume(volumeWeightedVelocity(particles, voidFraction));
     forAll(Us, c)
     {
-        if (Ksl[c] > SMALL)
-        {
-            Us[c] = KvCell[c]/Ksl[c];
-        }
-        else if (solid[c] > SMALL)
-        {
-            Us[c] = momentum[c]/solid[c];
-        }
-        else
-        {
-            Us[c] = Zero;
-        }
+        Us[c] = Ksl[c] > SMALL ? KvCell[c]/Ksl[c] : UsVolume[c];
     }
 
     Ksl.correctBoundaryConditions();

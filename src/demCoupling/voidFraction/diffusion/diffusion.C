@@ -22,7 +22,7 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     const fvMesh& mesh
 )
 :
-    voidFractionModel(dict, mesh),
+    centre(dict, mesh),
     bandwidth_
     (
         dict.subDict("diffusionCoeffs").getCheck<scalar>
@@ -47,28 +47,6 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
 
     Info<< "    diffusion: bandwidth " << bandwidth_ << " m, " << nSteps_
         << " implicit steps" << endl;
-}
-
-
-void Foam::demCoupling::voidFractionModels::diffusion::distribute
-(
-    const particleData& particles
-)
-{
-    forAll(particles.cell, i)
-    {
-        const label host = particles.cell[i];
-        if (host < 0)
-        {
-            cells_[i].clear();
-            weights_[i].clear();
-        }
-        else
-        {
-            cells_[i] = labelList(1, host);
-            weights_[i] = scalarList(1, 1.0);
-        }
-    }
 }
 
 
