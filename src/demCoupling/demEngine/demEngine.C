@@ -49,20 +49,32 @@ MPI_Comm solverComm()
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
-void Foam::demCoupling::demEngine::checkScript(const dictionary& dict)
+void Foam::demCoupling::demEngine::scanScript
+(
+    const fileName& script,
+    const fileName& caseDir,
+    const dictionary& dict,
+    bool& haveCouple,
+    bool& haveForce,
+    const label depth
+)
 {
-    IFstream is(script_);
+    IFstream is(script);
     if (!is.good())
     {
         FatalIOErrorInFunction(dict)
-            << "Cannot open the DEM script " << script_ << nl
-            << "    (keyword demScript, relative to the case directory)"
+            << "Cannot open the DEM script " << script << nl
+            << "    (keyword demScript, or an 'include' in it; paths are"
+            << " relative to the case directory)"
             << exit(FatalIOError);
     }
-
-    bool haveCouple = false;
-    bool haveForce = false;
-    coupleEvery_ = -1;
+    if (depth > 16)
+    {
+        FatalIOErrorInFunction(dict)
+            << "DEM script " << script << ": 'include' nested deeper than 16"
+            << " levels (a file that includes itself?)"
+            << exit(FatalIOError);
+    }
 
     // Join LIGGGHTS continuation lines ('&' at the end) while reading
     std::string line, joined;
@@ -80,6 +92,17 @@ void Foam::demCoupling::demEngine::checkScript(const dictionary& dict)
         const wordList w(scriptWords(joined));
         joined.clear();
 
+        if (w.size() == 2 && w[0] == "include")
+        {
+            fileName inc(w[1]);
+            inc.expand();
+            if (!inc.isAbsolute())
+            {
+                inc = caseDir/inc;
+            }
+            scanScript(inc, caseDir, dict, haveCouple, haveForce, depth + 1);
+            continue;
+        }
         if (w.size() < 4 || w[0] != "fix")
         {
             continue;
@@ -96,7 +119,7 @@ void Foam::demCoupling::demEngine::checkScript(const dictionary& dict)
             )
             {
                 FatalIOErrorInFunction(dict)
-                    << "DEM script " << script_ << " line " << lineNo
+                    << "DEM script " << script << " line " << lineNo
                     << ": expected" << nl
                     << "    fix <id> all couple/cfd couple_every <N> mpi" << nl
                     << "(interDemFoam exchanges data through MPI in one"
@@ -106,7 +129,7 @@ void Foam::demCoupling::demEngine::checkScript(const dictionary& dict)
             if (!readLabel(w[5], coupleEvery_) || coupleEvery_ < 1)
             {
                 FatalIOErrorInFunction(dict)
-                    << "DEM script " << script_ << " line " << lineNo
+                    << "DEM script " << script << " line " << lineNo
                     << ": couple_every must be a whole number >= 1 written"
                     << " out (not a variable), found '" << w[5] << "'"
                     << exit(FatalIOError);
@@ -117,6 +140,23 @@ void Foam::demCoupling::demEngine::checkScript(const dictionary& dict)
             haveForce = true;
         }
     }
+}
+
+
+void Foam::demCoupling::demEngine::checkScript
+(
+    const dictionary& dict,
+    const fileName& caseDir
+)
+{
+    bool haveCouple = false;
+    bool haveForce = false;
+    coupleEvery_ = -1;
+
+    scanScript
+    (
+        script_, caseDir, dict, haveCouple, haveForce, 0
+    );
 
     if (!haveCouple || !haveForce)
     {
@@ -158,7 +198,7 @@ Foam::demCoupling::demEngine::demEngine
         script_ = caseDir/script_;
     }
 
-    checkScript(couplingDict);
+    checkScript(couplingDict, caseDir);
 
     int mpiUp = 0;
     MPI_Initialized(&mpiUp);

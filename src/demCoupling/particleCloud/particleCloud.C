@@ -1,8 +1,13 @@
 #include "particleCloud.H"
 #include "immiscibleIncompressibleTwoPhaseMixture.H"
 #include "zeroGradientFvPatchFields.H"
+#include "fixedValueFvPatchFields.H"
+#include "wallPolyPatch.H"
 #include "fvcGrad.H"
 #include "fvcReconstruct.H"
+#include "fvcCurl.H"
+#include "fvcDiv.H"
+#include "fvcLaplacian.H"
 #include "surfaceFields.H"
 #include "Time.H"
 #include "passiveParticleCloud.H"
@@ -60,6 +65,35 @@ Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh> couplingField
     );
 }
 
+// Boundary types of the void fraction when 0/ has no voidfraction file:
+// walls zeroGradient; open boundaries (inlets, outlets, atmosphere) fixed at
+// 1, so the velocity given there is superficial (the flux through an open
+// face is eps_f phi, and no particle volume crosses a boundary); constraint
+// patches (cyclic, empty, processor, symmetry) their own type
+Foam::wordList voidfractionPatchTypes(const Foam::fvMesh& mesh)
+{
+    using namespace Foam;
+    const fvBoundaryMesh& patches = mesh.boundary();
+    wordList types(patches.size());
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi].patch();
+        if (isA<wallPolyPatch>(pp))
+        {
+            types[patchi] = zeroGradientFvPatchScalarField::typeName;
+        }
+        else if (polyPatch::constraintType(pp.type()))
+        {
+            types[patchi] = pp.type();
+        }
+        else
+        {
+            types[patchi] = fixedValueFvPatchScalarField::typeName;
+        }
+    }
+    return types;
+}
+
 } // End anonymous namespace
 
 
@@ -89,7 +123,17 @@ Foam::demCoupling::particleCloud::particleCloud
     ),
     voidfraction_
     (
-        couplingField(mesh, "voidfraction", dimensionedScalar("one", dimless, 1.0))
+        IOobject
+        (
+            "voidfraction",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        voidfractionPatchTypes(mesh)
     ),
     Us_(couplingField(mesh, "Us", dimensionedVector(dimVelocity, Zero))),
     Ksl_
@@ -185,16 +229,50 @@ void Foam::demCoupling::particleCloud::computeForces()
       - fvc::reconstruct(mixture_.surfaceTensionForce()*mesh_.magSf())
     );
 
+    // Fields only some force models need
+    bool needVorticity = false;
+    bool needViscousStress = false;
+    for (const forceModel& model : forces_)
+    {
+        needVorticity = needVorticity || model.needsVorticity();
+        needViscousStress = needViscousStress || model.needsViscousStress();
+    }
+
     // The fluid each particle sees: the weighted average over its cells
     // (through the model's kernel), summed over the processors that hold
-    // some of them: U 3, eps, rho, mu, grad(p) 3
+    // some of them: U 3, eps, rho, mu, grad(p) 3 [, curl(U) 3, div(tau) 3]
     const List<vector> Ui(vf.sample(U_));
     const scalarList epsi(vf.sample(voidfraction_));
     const scalarList rhoi(vf.sample(rho_));
     const scalarList mui(vf.sample(mu));
     const List<vector> gradPi(vf.sample(gradP));
 
-    constexpr label nq = 9;
+    List<vector> vorticityi;
+    if (needVorticity)
+    {
+        vorticityi = vf.sample(volVectorField("curlU", fvc::curl(U_)));
+    }
+
+    List<vector> divTaui;
+    if (needViscousStress)
+    {
+        // tau = mu (grad(U) + grad(U)^T - 2/3 div(U) I)
+        const volTensorField gradU(fvc::grad(U_));
+        divTaui = vf.sample
+        (
+            volVectorField
+            (
+                "divTau",
+                fvc::laplacian(mu, U_) + fvc::div(mu*dev2(T(gradU)))
+            )
+        );
+    }
+
+    const label nq =
+        9 + (needVorticity ? 3 : 0) + (needViscousStress ? 3 : 0);
+    const label iVorticity = 9;
+    const label iDivTau = needVorticity ? 12 : 9;
+
     scalarList sums(nq*n, Zero);
     forAll(particles_.position, i)
     {
@@ -204,6 +282,20 @@ void Foam::demCoupling::particleCloud::computeForces()
         q[4] = rhoi[i];
         q[5] = mui[i];
         q[6] = gradPi[i].x(); q[7] = gradPi[i].y(); q[8] = gradPi[i].z();
+        if (needVorticity)
+        {
+            for (direction c = 0; c < 3; ++c)
+            {
+                q[iVorticity + c] = vorticityi[i][c];
+            }
+        }
+        if (needViscousStress)
+        {
+            for (direction c = 0; c < 3; ++c)
+            {
+                q[iDivTau + c] = divTaui[i][c];
+            }
+        }
     }
     if (Pstream::parRun())
     {
@@ -230,6 +322,15 @@ void Foam::demCoupling::particleCloud::computeForces()
         s.rhoF = q[4];
         s.muF = q[5];
         s.gradP = vector(q[6], q[7], q[8]);
+        if (needVorticity)
+        {
+            s.vorticity =
+                vector(q[iVorticity], q[iVorticity + 1], q[iVorticity + 2]);
+        }
+        if (needViscousStress)
+        {
+            s.divTau = vector(q[iDivTau], q[iDivTau + 1], q[iDivTau + 2]);
+        }
         Uf_[i] = s.Uf;
 
         for (const forceModel& model : forces_)

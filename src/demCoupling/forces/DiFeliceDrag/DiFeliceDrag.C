@@ -36,6 +36,16 @@ Foam::scalar Foam::demCoupling::forceModels::DiFeliceDrag::chi(const scalar Re)
 }
 
 
+Foam::scalar Foam::demCoupling::forceModels::DiFeliceDrag::voidageExponent
+(
+    const scalar Re,
+    const scalar
+) const
+{
+    return chi(Re);
+}
+
+
 Foam::demCoupling::particleForce
 Foam::demCoupling::forceModels::DiFeliceDrag::force
 (
@@ -50,15 +60,16 @@ Foam::demCoupling::forceModels::DiFeliceDrag::force
     if (Re < ROOTVSMALL)
     {
         // Re -> 0: Cd -> 23.04/Re, so K = 1/2 Cd rho (pi d^2/4) eps^(2-chi)
-        // |u-v| tends to the finite 2.88 pi mu d eps^(1-chi)
-        const scalar chi0 = 3.7;   // chi(Re -> 0): the exponential vanishes
+        // |u-v| tends to the finite 2.88 pi mu d eps^(1-chi), with chi at
+        // Re -> 0 (the exponential term vanishes there)
+        const scalar chi0 = voidageExponent(ROOTVSMALL, s.eps);
         f.K = 2.88*constant::mathematical::pi*s.muF*s.d
-            *pow(s.eps, 2 - chi0)/s.eps;
+            *pow(s.eps, 1 - chi0);
         return f;
     }
 
     f.K = 0.5*Cd(Re)*s.rhoF*constant::mathematical::pi/4*sqr(s.d)
-        *pow(s.eps, 2 - chi(Re))*magUr;
+        *pow(s.eps, 2 - voidageExponent(Re, s.eps))*magUr;
 
     return f;
 }

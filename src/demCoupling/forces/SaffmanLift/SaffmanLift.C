@@ -1,0 +1,46 @@
+#include "SaffmanLift.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace demCoupling
+{
+namespace forceModels
+{
+    defineTypeNameAndDebug(SaffmanLift, 0);
+    addToRunTimeSelectionTable(forceModel, SaffmanLift, dictionary);
+}
+}
+}
+
+
+Foam::demCoupling::forceModels::SaffmanLift::SaffmanLift
+(
+    const dictionary& coeffs
+)
+:
+    forceModel(coeffs)
+{}
+
+
+Foam::demCoupling::particleForce
+Foam::demCoupling::forceModels::SaffmanLift::force
+(
+    const particleFluidState& s
+) const
+{
+    particleForce f;
+
+    const scalar magW = mag(s.vorticity);
+    if (magW < VSMALL)
+    {
+        return f;
+    }
+
+    f.explicitForce = 1.61*sqr(s.d)*sqrt(s.muF*s.rhoF/magW)
+        *((s.Uf - s.Up) ^ s.vorticity);
+    return f;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,39 @@
+#include "viscousForce.H"
+#include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
+
+namespace Foam
+{
+namespace demCoupling
+{
+namespace forceModels
+{
+    defineTypeNameAndDebug(viscousForce, 0);
+    addToRunTimeSelectionTable(forceModel, viscousForce, dictionary);
+}
+}
+}
+
+
+Foam::demCoupling::forceModels::viscousForce::viscousForce
+(
+    const dictionary& coeffs
+)
+:
+    forceModel(coeffs)
+{}
+
+
+Foam::demCoupling::particleForce
+Foam::demCoupling::forceModels::viscousForce::force
+(
+    const particleFluidState& s
+) const
+{
+    particleForce f;
+    f.explicitForce = constant::mathematical::pi/6*pow3(s.d)*s.divTau;
+    return f;
+}
+
+
+// ************************************************************************* //
