@@ -46,3 +46,14 @@ set_tests_properties(case.couplingInputErrors PROPERTIES LABELS "case;coupled;in
 # = serial, particle volume conserved (centre, divided, virtualSphere)
 add_test(case.voidFractionParallel "bash" "cases/voidFractionParallel.sh")
 set_tests_properties(case.voidFractionParallel PROPERTIES LABELS "case;coupled;parallel" TIMEOUT 600)
+
+# Fixed packed bed: pressure gradient within 10 % of Ergun (Gidaspow, Rong)
+add_test(case.packedBedGidaspow "bash" "cases/packedBed.sh" "GidaspowDrag")
+set_tests_properties(case.packedBedGidaspow PROPERTIES LABELS "case;coupled;forces" TIMEOUT 600)
+
+add_test(case.packedBedRong "bash" "cases/packedBed.sh" "RongDrag")
+set_tests_properties(case.packedBedRong PROPERTIES LABELS "case;coupled;forces" TIMEOUT 600)
+
+# Released bed above minimum fluidization: alpha stays 1 while eps changes
+add_test(case.fluidizedBedAlpha "bash" "cases/packedBed.sh" "fluidize")
+set_tests_properties(case.fluidizedBedAlpha PROPERTIES LABELS "case;coupled" TIMEOUT 600)

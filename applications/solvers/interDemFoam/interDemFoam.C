@@ -28,6 +28,8 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "particleCloud.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -5,6 +5,7 @@
 
 #include <mpi.h>
 #include <unistd.h>
+#include <cmath>
 
 // LIGGGHTS, through its installed C++ headers (libliggghts-dev)
 #include "liggghts/lammps.h"
@@ -13,6 +14,7 @@
 #include "liggghts/modify.h"
 #include "liggghts/fix.h"
 #include "liggghts/update.h"
+#include "liggghts/domain.h"
 
 namespace
 {
@@ -306,6 +308,14 @@ void Foam::demCoupling::demEngine::gather(particleData& particles)
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     const int nLocal = atom.nlocal;
 
+    // Periodic DEM directions: LIGGGHTS maps atoms back into the box only
+    // when it rebuilds its neighbour lists, so between rebuilds a position
+    // may lie up to half the skin beyond a periodic face; wrap it (the
+    // fluid mesh there has the matching cyclic patches)
+    const LAMMPS_NS::Domain& domain = *lmp_->domain;
+    const int periodic[3] =
+        {domain.xperiodic, domain.yperiodic, domain.zperiodic};
+
     // Pack: tag type x(3) v(3) omega(3) d rho
     constexpr int nValues = 13;
     std::vector<double> send(nValues*nLocal);
@@ -317,7 +327,13 @@ void Foam::demCoupling::demEngine::gather(particleData& particles)
         s[1] = atom.type[i];
         for (int k = 0; k < 3; ++k)
         {
-            s[2 + k] = atom.x[i][k];
+            double x = atom.x[i][k];
+            if (periodic[k])
+            {
+                const double lo = domain.boxlo[k], len = domain.prd[k];
+                x -= len*std::floor((x - lo)/len);
+            }
+            s[2 + k] = x;
             s[5 + k] = atom.v[i][k];
             s[8 + k] = atom.omega ? atom.omega[i][k] : 0.0;
         }
