@@ -195,25 +195,58 @@ def fluidize(a):
         t, zcm, ztop = (float(x) for x in line.split()[:3])
         height.append((t, interp(table, t), zcm))
 
-    # Fixed-bed branch: dp = a U + b U^2 fitted where dp < 0.6 W, then its
-    # intersection with the bed weight (Kunii & Levenspiel's construction)
-    pts = [(u, p) for _, u, p in data if 0 < p < 0.6*W and u > 0]
+    # The pressure at the plate jumps from step to step (each DEM step
+    # changes eps, and d(eps)/dt is felt at once in incompressible flow):
+    # average it over velocity bins of 1/40 of the ramp
+    Uend = table[-1][1]
+    nBins = 40
+    sums = [0.0]*nBins
+    counts = [0]*nBins
+    for _, u, p in data:
+        b = int(u/Uend*nBins)
+        if 0 <= b < nBins:
+            sums[b] += p
+            counts[b] += 1
+    binned = [((b + 0.5)*Uend/nBins, sums[b]/counts[b])
+              for b in range(nBins) if counts[b]]
+    # plateau: the last quarter of the ramp
+    tail = [p for u, p in binned if u > 0.75*Uend]
+    plateau = sum(tail)/len(tail)
+    # Fixed-bed branch dp = a U + b U^2 through the bins below 0.6 of the
+    # plateau; U_mf where it meets the plateau (Kunii & Levenspiel's
+    # construction)
+    pts = [(u, p) for u, p in binned if 0 < p < 0.6*plateau]
     S11 = sum(u**2 for u, _ in pts); S12 = sum(u**3 for u, _ in pts)
     S22 = sum(u**4 for u, _ in pts)
     b1 = sum(u*p for u, p in pts); b2 = sum(u*u*p for u, p in pts)
     det = S11*S22 - S12**2
     ca = (b1*S22 - b2*S12)/det
     cb = (S11*b2 - S12*b1)/det
-    Umf = (-ca + math.sqrt(ca**2 + 4*cb*W))/(2*cb) if cb > 0 else W/ca
+    if abs(cb) > 1e-12*abs(ca):
+        disc = ca**2 + 4*cb*plateau
+        Umf = (-ca + math.sqrt(disc))/(2*cb)
+    else:
+        Umf = plateau/ca
     Uwy = wen_yu_umf(a)
-    # plateau: mean dp over the last quarter of the ramp
-    tail = [p for _, u, p in data if u > table[-1][1]*0.75]
-    plateau = sum(tail)/len(tail)
     z0 = height[0][2]
+    # Onset of expansion, a second reading of U_mf from the particles: where
+    # the line through the expanding bed's rise (last quarter of the ramp)
+    # meets the line through the fixed bed's creep (below U_mf/2, Wen-Yu)
+    def line(pts):
+        n = len(pts)
+        mx = sum(x for x, _ in pts)/n
+        my = sum(y for _, y in pts)/n
+        sxx = sum((x - mx)**2 for x, _ in pts)
+        k = sum((x - mx)*(y - my) for x, y in pts)/sxx
+        return k, my - k*mx
+    z0 = height[0][2]
+    k1, c1 = line([(u, z - z0) for _, u, z in height if 0.1*Uwy < u < 0.5*Uwy])
+    k2, c2 = line([(u, z - z0) for _, u, z in height if u > 0.75*Uend])
+    Uexp = (c1 - c2)/(k2 - k1)
     with open('fluidization.dat', 'w') as f:
-        f.write('# t[s] U[m/s] dp[Pa] dp/W\n')
-        for t, u, p in data[::10]:
-            f.write('%.4f %.5g %.6g %.5f\n' % (t, u, p, p/W))
+        f.write('# U[m/s] dp[Pa] dp/W (bin means)\n')
+        for u, p in binned:
+            f.write('%.5g %.6g %.5f\n' % (u, p, p/W))
     err = Umf/Uwy - 1
     print('Fluidization (ramp to %.3f m/s):' % table[-1][1])
     print('  bed buoyant weight per area W = %.2f Pa; plateau dp = %.2f Pa '
@@ -221,18 +254,22 @@ def fluidize(a):
     print('  fixed-bed branch dp = %.4g U + %.4g U^2 (Pa, m/s)' % (ca, cb))
     print('  U_mf measured %.5f m/s, Wen-Yu %.5f m/s: error %+.1f %%'
           % (Umf, Uwy, 100*err))
+    print('  bed starts to expand at U = %.5f m/s (%+.1f %% of Wen-Yu)'
+          % (Uexp, 100*(Uexp/Uwy - 1)))
     print('  bed centre of mass rose %.2f mm (%.4f -> %.4f m)'
           % (1e3*(height[-1][2] - z0), z0, height[-1][2]))
     with open('fluidization.summary', 'w') as f:
         f.write('W %.6g\nplateau %.6g\nUmf %.6g\nUmfWenYu %.6g\nerror %.4f\n'
-                % (W, plateau, Umf, Uwy, err))
+                'Uexpansion %.6g\n' % (W, plateau, Umf, Uwy, err, Uexp))
     if not a.noPlot:
         import matplotlib
         matplotlib.use('Agg')
         import matplotlib.pyplot as plt
         fig, (ax, ax2) = plt.subplots(2, 1, figsize=(6.4, 6.4), sharex=True)
         ax.plot([u for _, u, _ in data], [p/W for _, _, p in data], '-',
-                lw=0.8, label='interDemFoam, bed released')
+                color='0.85', lw=0.3, label='every step')
+        ax.plot([u for u, _ in binned], [p/W for _, p in binned], 'o-',
+                ms=3, label='interDemFoam, bin means')
         Us = [Umf*i/50 for i in range(51)]
         ax.plot(Us, [(ca*u + cb*u*u)/W for u in Us], 'k--', lw=1,
                 label='fixed-bed fit')
@@ -243,7 +280,9 @@ def fluidize(a):
         ax.set_ylim(0, 1.3)
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
-        ax2.plot([u for _, u, _ in height], [1e3*(z - z0) for _, _, z in height])
+        ax2.plot([u for _, u, _ in height], [1e3*(z - z0) for _, _, z in height],
+                 label='bed released, ramp %.3f m/s in %g s' % (Uend, table[-1][0]))
+        ax2.legend(fontsize=8)
         ax2.axvline(Uwy, color='r', lw=1)
         ax2.axvline(Umf, color='b', lw=1, ls=':')
         ax2.set_xlabel('superficial velocity U [m/s]')
