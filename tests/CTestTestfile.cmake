@@ -57,3 +57,8 @@ set_tests_properties(case.packedBedRong PROPERTIES LABELS "case;coupled;forces" 
 # Released bed above minimum fluidization: alpha stays 1 while eps changes
 add_test(case.fluidizedBedAlpha "bash" "cases/packedBed.sh" "fluidize")
 set_tests_properties(case.fluidizedBedAlpha PROPERTIES LABELS "case;coupled" TIMEOUT 600)
+
+# Restart: killed with SIGKILL, restarted from latestTime, same end state as
+# an uninterrupted run; a packing at rest stays at rest across a restart
+add_test(case.restart "bash" "cases/restart.sh")
+set_tests_properties(case.restart PROPERTIES LABELS "case;coupled;reliability" TIMEOUT 600)

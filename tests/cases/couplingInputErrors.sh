@@ -14,10 +14,12 @@
 copyTutorial singleParticleSettling couplingInputErrors
 narrowSettlingColumn
 setEntry system/controlDict endTime 3e-4
+setEntry system/controlDict writeInterval 1e-4
 restore0Dir > /dev/null
 runApplication blockMesh || fail "blockMesh"
 runApplication setFields || fail "setFields"
 cp DEM/in.liggghts DEM/in.liggghts.good
+cp DEM/in.settings DEM/in.settings.good
 cp constant/couplingProperties couplingProperties.good
 cp system/controlDict controlDict.good
 
@@ -36,18 +38,39 @@ expectError()
     done
     echo "ok: $name ($(grep -m1 -A1 -- "$1" "log.$name" | head -n 1 | cut -c1-100))"
     cp DEM/in.liggghts.good DEM/in.liggghts
+    cp DEM/in.settings.good DEM/in.settings
     cp couplingProperties.good constant/couplingProperties
     cp controlDict.good system/controlDict
+}
+
+# expectWarning <name> <pattern>...: the solver runs to the end and prints
+# every pattern (guards that warn and go on)
+expectWarning()
+{
+    local name="$1"; shift
+    timeout 120 interDemFoam > "log.$name" 2>&1 < /dev/null \
+        || fail "$name: the run failed (log.$name)"
+    grep -q "^End" "log.$name" || fail "$name: the run did not end"
+    for pat in "$@"
+    do
+        grep -q -- "$pat" "log.$name" || fail "$name: no '$pat' in log.$name"
+    done
+    echo "ok: $name ($(grep -m1 -- "$1" "log.$name" | cut -c1-100))"
+    cp DEM/in.liggghts.good DEM/in.liggghts
+    cp DEM/in.settings.good DEM/in.settings
+    cp couplingProperties.good constant/couplingProperties
+    cp controlDict.good system/controlDict
+    rm -rf 0.000[1-9]*
 }
 
 # the well-set case runs (else the errors below would prove nothing)
 timeout 300 interDemFoam > log.good 2>&1 < /dev/null || fail "the well-set case fails (log.good)"
 grep -q "^End" log.good || fail "the well-set case did not end"
 
-sed -i '/couple\/cfd\/force/d' DEM/in.liggghts
+sed -i '/couple\/cfd\/force/d' DEM/in.settings
 expectError noForceFix "couple/cfd/force" "in.liggghts"
 
-sed -i 's/couple_every 10/couple_every 5/' DEM/in.liggghts
+sed -i 's/couple_every 10/couple_every 5/' DEM/in.settings
 expectError coupleEveryMismatch "couple_every 5" "10 DEM steps" "in.liggghts"
 
 setEntry system/controlDict deltaT 1.5e-5
@@ -64,5 +87,91 @@ expectError badMomentumCoupling "implicit" "momentumCoupling" "semiImplicit" "co
 
 sed -i 's/^forces .*/forces ( DiFeliceDrag buoyancy );/' constant/couplingProperties
 expectError badForce "buoyancy" "pressureGradient" "couplingProperties"
+
+# couplingProperties: keywords, types, ranges, sub-dictionaries
+echo "minVoidfraction 0.3;" >> constant/couplingProperties
+expectError unknownKeyword "Unknown keyword 'minVoidfraction'" "Did you mean 'minVoidFraction'" "couplingProperties"
+
+sed -i 's/^minVoidFraction .*/minVoidFraction   low;/' constant/couplingProperties
+expectError wrongType "minVoidFraction" "couplingProperties"
+
+sed -i 's/^minVoidFraction .*/minVoidFraction   0;/' constant/couplingProperties
+expectError floorOutOfRange "minVoidFraction" "couplingProperties"
+
+sed -i 's/^forces .*/forces ( DiFeliceDrag DiFeliceDrag );/' constant/couplingProperties
+expectError forceTwice "listed twice" "forces"
+
+sed -i '/^forces /d' constant/couplingProperties
+expectError noForces "forces" "couplingProperties"
+
+sed -i 's/^voidFraction .*/voidFraction      virtualSphere;/' constant/couplingProperties
+expectError noVirtualSphereCoeffs "virtualSphereCoeffs" "couplingProperties"
+
+sed -i 's/^voidFraction .*/voidFraction      virtualSphere;/' constant/couplingProperties
+echo "virtualSphereCoeffs { diameterRatio 0.5; sizeThreshold 0.25; }" >> constant/couplingProperties
+expectError diameterRatioRange "diameterRatio" "couplingProperties"
+
+sed -i 's/^voidFraction .*/voidFraction      diffusion;/' constant/couplingProperties
+echo "diffusionCoeffs { bandwidth -0.003; nSteps 3; }" >> constant/couplingProperties
+expectError negativeBandwidth "bandwidth" "couplingProperties"
+
+echo "outsideParticles drop;" >> constant/couplingProperties
+expectError badOutsidePolicy "outsideParticles 'drop'" "ignore" "delete"
+
+# the DEM script and the mesh
+sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts
+sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.05 units box/' DEM/in.liggghts
+expectError demBoxTooSmall "does not cover the fluid mesh" "in.liggghts"
+
+sed -i 's/couple_every 10 mpi/couple_every 10 file/' DEM/in.settings
+expectError fileCoupling "couple_every <N> mpi" "in.settings"
+
+sed -i 's/couple_every 10 mpi/couple_every ${n} mpi/' DEM/in.settings
+expectError coupleEveryVariable "whole number" "in.settings"
+
+sed -i 's/^include .*/include         DEM\/in.nothere/' DEM/in.liggghts
+expectError missingInclude "Cannot open the DEM script" "in.nothere"
+
+# restart
+setEntry system/controlDict startFrom latestTime
+sed -i '/^demRestartScript/d' constant/couplingProperties
+expectError restartNoScript "demRestartScript" "read_restart"
+
+setEntry system/controlDict startFrom latestTime
+mv 0.0003/liggghts.restart 0.0003/liggghts.restart.kept
+expectError restartNoDemState "DEM state of that time is missing" "0.0003/liggghts.restart"
+mv 0.0003/liggghts.restart.kept 0.0003/liggghts.restart
+
+# guards that warn and go on, and one that stops
+sed -i 's/^timestep .*/timestep        5e-5/; s/couple_every 10/couple_every 2/' DEM/in.settings
+expectWarning rayleighTime "Rayleigh time" "Use a timestep of at most 20 %"
+
+sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.3 units box/' DEM/in.liggghts
+sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.25 units box/' DEM/in.liggghts
+expectWarning outsideIgnored "particle(s) outside the fluid mesh" "outsideParticles ignore"
+
+# two particles, one above the mesh: it is deleted, the other goes on
+sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.3 units box/' DEM/in.liggghts
+sed -i 's/^create_atoms .*/&\ncreate_atoms    1 single 0.01 0.01 0.25 units box/' DEM/in.liggghts
+sed -i 's/^set             atom 1 .*/&\nset             atom 2 diameter 0.001 density 2500/' DEM/in.liggghts
+echo "outsideParticles delete;" >> constant/couplingProperties
+expectWarning outsideDeleted "Deleted 1 particle(s) outside the fluid mesh" "Particles: 1 in the DEM"
+
+sed -i 's/^velocity .*/velocity        all set 0 0 -1e400 units box/' DEM/in.liggghts
+expectError nonFiniteParticle "non-finite position" "DEM blew up"
+
+# in parallel: an error ends every rank, with the message, and nothing hangs
+rm -rf 0.000[1-9]* processor*
+runApplication decomposePar -force > /dev/null || fail "decomposePar"
+sed -i 's/^velocity .*/velocity        all set 0 0 -1e400 units box/' DEM/in.liggghts
+start=$(date +%s)
+timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 interDemFoam -parallel \
+    > log.parallelError 2>&1 < /dev/null
+rc=$?
+[ $rc -ne 124 ] || fail "parallel error: the run hung"
+[ $rc -ne 0 ] || fail "parallel error: the run succeeded"
+grep -q "non-finite position" log.parallelError || fail "parallel error: no message"
+echo "ok: parallelError (exit $rc after $(( $(date +%s) - start )) s, every rank ended)"
+cp DEM/in.liggghts.good DEM/in.liggghts
 
 pass "coupled-case input errors are reported clearly"

@@ -101,10 +101,13 @@ int main(int argc, char *argv[])
             }
         }
 
+        particles.checkFinite();
+
         runTime.write();
         if (runTime.writeTime())
         {
             particles.writeParticles();
+            particles.writeDemRestart();
         }
         particles.report();
 

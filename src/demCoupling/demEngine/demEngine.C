@@ -2,10 +2,12 @@
 #include "IFstream.H"
 #include "Pstream.H"
 #include "mathematicalConstants.H"
+#include "OSspecific.H"
 
 #include <mpi.h>
 #include <unistd.h>
 #include <cmath>
+#include <fenv.h>
 
 // LIGGGHTS, through its installed C++ headers (libliggghts-dev)
 #include "liggghts/lammps.h"
@@ -15,6 +17,7 @@
 #include "liggghts/fix.h"
 #include "liggghts/update.h"
 #include "liggghts/domain.h"
+#include "liggghts/fix_property_global.h"
 
 namespace
 {
@@ -22,6 +25,18 @@ namespace
 // The fix ids couple/cfd/force registers for the exchanged per-atom arrays
 const char* const dragForceFixId = "dragforce";
 const char* const torqueFixId = "hdtorque";
+
+// OpenFOAM traps floating-point exceptions (FOAM_SIGFPE); LIGGGHTS is not
+// written for that: an overflow in a script or a blown-up DEM would die of
+// SIGFPE inside LIGGGHTS. Trapping is off while LIGGGHTS runs; non-finite
+// particle data is then caught, with a message, when the particles are read
+struct fpeTrapsOff
+{
+    const int traps;
+    fpeTrapsOff() : traps(fegetexcept()) { fedisableexcept(FE_ALL_EXCEPT); }
+    ~fpeTrapsOff() { feclearexcept(FE_ALL_EXCEPT); feenableexcept(traps); }
+};
+
 
 // Whitespace-separated words of one script line (comments removed)
 Foam::wordList scriptWords(const std::string& line)
@@ -178,6 +193,20 @@ void Foam::demCoupling::demEngine::checkScript
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::fileName Foam::demCoupling::demEngine::restartFile
+(
+    const Time& runTime,
+    const word& timeName
+)
+{
+    // The master's time folder (processor0's in a decomposed case), the
+    // same name on every rank
+    fileName file(runTime.path()/timeName/"liggghts.restart");
+    Pstream::scatter(file);
+    return file;
+}
+
+
 Foam::demCoupling::demEngine::demEngine
 (
     const dictionary& couplingDict,
@@ -189,11 +218,48 @@ Foam::demCoupling::demEngine::demEngine
     lmp_(nullptr),
     ownsMPI_(false),
     firstRun_(true),
+    restarted_(false),
     counts_(),
     offsets_()
 {
     // Paths of the DEM script (and inside it) are relative to the case
     const fileName caseDir(runTime.globalPath());
+
+    // A run that starts after 0 continues from the DEM state of that time
+    fileName restart;
+    if (runTime.value() > 0)
+    {
+        restart = restartFile(runTime, runTime.timeName());
+        bool found = Pstream::master() ? isFile(restart) : false;
+        Pstream::scatter(found);
+        if (!found)
+        {
+            FatalIOErrorInFunction(runTime.controlDict())
+                << "The run starts at t = " << runTime.timeName()
+                << " s, but the DEM state of that time is missing: "
+                << restart << nl
+                << "    interDemFoam writes it at every write time; a time"
+                << " folder without it was written by another program or"
+                << " cut short (killed while writing)." << nl
+                << "    Start from an earlier time that has one (startFrom"
+                << " startTime; startTime <t>), or from 0."
+                << exit(FatalIOError);
+        }
+        if (!couplingDict.found("demRestartScript"))
+        {
+            FatalIOErrorInFunction(couplingDict)
+                << "Restarting at t = " << runTime.timeName() << " s needs"
+                << " the keyword demRestartScript: a LIGGGHTS script that"
+                << " begins with" << nl
+                << "    read_restart ${restartFile}" << nl
+                << "and repeats what restart files do not hold (materials,"
+                << " pair style, walls, integration and coupling fixes)."
+                << exit(FatalIOError);
+        }
+        script_ = couplingDict.get<fileName>("demRestartScript");
+        restarted_ = true;
+    }
+
     script_.expand();
     if (!script_.isAbsolute())
     {
@@ -218,15 +284,37 @@ Foam::demCoupling::demEngine::demEngine
             << exit(FatalError);
     }
 
-    const fileName demLog(caseDir/"log.liggghts");
-    std::string a0("liggghts"), a1("-log"), a2(demLog), a3("-echo"), a4("none");
-    char* argv[] = {&a0[0], &a1[0], &a2[0], &a3[0], &a4[0], nullptr};
+    // A restarted run logs to log.liggghts.<time>: the log of the run it
+    // continues is kept
+    const fileName demLog
+    (
+        caseDir/(restarted_ ? "log.liggghts." + runTime.timeName() : "log.liggghts")
+    );
+    // On a restart the script gets the file as the index variable
+    // restartFile (set before the script runs, so a script's own
+    // "variable restartFile index <default>" yields to it)
+    std::string a0("liggghts"), a1("-log"), a2(demLog), a3("-echo"),
+        a4("none"), a5("-var"), a6("restartFile"), a7(restart);
+    char* argv[] =
+    {
+        &a0[0], &a1[0], &a2[0], &a3[0], &a4[0], &a5[0], &a6[0], &a7[0],
+        nullptr
+    };
+    const int argc = restarted_ ? 8 : 5;
 
     Info<< "DEM: LIGGGHTS on " << Pstream::nProcs() << " rank(s), script "
-        << script_ << ", log " << demLog << endl;
+        << script_ << ", log " << demLog;
+    if (restarted_)
+    {
+        Info<< nl << "DEM: restarting from " << restart;
+    }
+    Info<< endl;
 
-    lmp_ = new LAMMPS_NS::LAMMPS(5, argv, solverComm());
-    lmp_->input->file(script_.c_str());
+    {
+        fpeTrapsOff noTraps;
+        lmp_ = new LAMMPS_NS::LAMMPS(argc, argv, solverComm());
+        lmp_->input->file(script_.c_str());
+    }
 
     // Authoritative check on the live instance (the script may 'include')
     if
@@ -279,6 +367,140 @@ Foam::scalar Foam::demCoupling::demEngine::timeStep() const
 }
 
 
+Foam::boundBox Foam::demCoupling::demEngine::box() const
+{
+    const LAMMPS_NS::Domain& domain = *lmp_->domain;
+    return boundBox
+    (
+        point(domain.boxlo[0], domain.boxlo[1], domain.boxlo[2]),
+        point(domain.boxhi[0], domain.boxhi[1], domain.boxhi[2])
+    );
+}
+
+
+void Foam::demCoupling::demEngine::writeRestart(const Time& runTime)
+{
+    // Written to a temporary name, then renamed: a run killed while
+    // writing leaves no half restart file under the real name
+    const fileName file(restartFile(runTime, runTime.timeName()));
+    const fileName tmp(file + ".writing");
+    if (Pstream::master())
+    {
+        mkDir(file.path());
+    }
+    const std::string cmd("write_restart " + tmp);
+    {
+        fpeTrapsOff noTraps;
+        lmp_->input->one(cmd.c_str());
+    }
+    if (Pstream::master() && !Foam::mv(tmp, file))
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << file
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::demCoupling::demEngine::deleteParticles(const labelList& tags)
+{
+    if (tags.empty())
+    {
+        return;
+    }
+    // In chunks: LIGGGHTS reads one command line of limited length
+    const label chunk = 100;
+    for (label start = 0; start < tags.size(); start += chunk)
+    {
+        std::string cmd("group interDemFoamOutside id");
+        for (label i = start; i < min(start + chunk, tags.size()); ++i)
+        {
+            cmd += ' ' + std::to_string(tags[i]);
+        }
+        lmp_->input->one(cmd.c_str());
+    }
+    lmp_->input->one("delete_atoms group interDemFoamOutside compress no");
+    lmp_->input->one("group interDemFoamOutside delete");
+    if (nParticles() == 0)
+    {
+        // LIGGGHTS cannot sort an empty system (bin size 0): stop sorting
+        lmp_->input->one("atom_modify sort 0 0.0");
+    }
+
+    // The atom count changed: the next run needs LIGGGHTS's setup again
+    firstRun_ = true;
+}
+
+
+void Foam::demCoupling::demEngine::checkTimeStep() const
+{
+    using namespace LAMMPS_NS;
+
+    const int nTypes = lmp_->atom->ntypes;
+    Fix* E = lmp_->modify->find_fix_property
+    (
+        "youngsModulus", "property/global", "peratomtype", nTypes, 0,
+        "interDemFoam", false
+    );
+    Fix* nu = lmp_->modify->find_fix_property
+    (
+        "poissonsRatio", "property/global", "peratomtype", nTypes, 0,
+        "interDemFoam", false
+    );
+    if (!E || !nu)
+    {
+        Info<< "DEM: no youngsModulus/poissonsRatio per atom type: the time"
+            << " step is not checked against the Rayleigh time" << endl;
+        return;
+    }
+
+    // Smallest Rayleigh time over the local particles, then over ranks:
+    // T_R = pi r sqrt(rho/G)/(0.1631 nu + 0.8766), G = E/(2 (1 + nu))
+    const Atom& atom = *lmp_->atom;
+    double tR = GREAT, rMin = 0, EMin = 0;
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        const int t = atom.type[i] - 1;
+        const double Ei = static_cast<FixPropertyGlobal*>(E)->compute_vector(t);
+        const double nui = static_cast<FixPropertyGlobal*>(nu)->compute_vector(t);
+        const double r = atom.radius[i];
+        const double rho = atom.rmass[i]/(4.0/3.0*constant::mathematical::pi*r*r*r);
+        const double G = Ei/(2*(1 + nui));
+        const double ti =
+            constant::mathematical::pi*r*std::sqrt(rho/G)/(0.1631*nui + 0.8766);
+        if (ti < tR)
+        {
+            tR = ti;
+            rMin = r;
+            EMin = Ei;
+        }
+    }
+    const double tRLocal = tR;
+    MPI_Allreduce(&tRLocal, &tR, 1, MPI_DOUBLE, MPI_MIN, solverComm());
+    if (tR >= GREAT)
+    {
+        return;   // no particles yet
+    }
+
+    const scalar dt = timeStep();
+    Info<< "DEM: time step " << dt << " s = " << 100*dt/tR << " % of the"
+        << " Rayleigh time " << tR << " s" << endl;
+    if (dt > 0.2*tR)
+    {
+        Info<< "Warning: the DEM time step " << dt << " s is " << 100*dt/tR
+            << " % of the Rayleigh time " << tR << " s (smallest particle";
+        if (rMin > 0)
+        {
+            Info<< " d = " << 2*rMin << " m, E = " << EMin << " Pa";
+        }
+        Info<< "): contacts are under-resolved and may blow up." << nl
+            << "    Use a timestep of at most 20 % of it (" << 0.2*tR
+            << " s) in " << script_ << ", or a softer youngsModulus."
+            << endl;
+    }
+}
+
+
 Foam::label Foam::demCoupling::demEngine::nParticles() const
 {
     int n = lmp_->atom->nlocal;
@@ -296,7 +518,12 @@ void Foam::demCoupling::demEngine::advance(const label nSteps)
         "run " + std::to_string(nSteps)
       + (firstRun_ ? "" : " pre no post no")
     );
-    lmp_->input->one(cmd.c_str());
+
+    {
+        fpeTrapsOff noTraps;
+        lmp_->input->one(cmd.c_str());
+    }
+
     firstRun_ = false;
 }
 

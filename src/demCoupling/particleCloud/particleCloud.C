@@ -94,6 +94,74 @@ Foam::wordList voidfractionPatchTypes(const Foam::fvMesh& mesh)
     return types;
 }
 
+// Levenshtein distance, for "did you mean"
+Foam::label editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<Foam::label> prev(b.size() + 1), cur(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+    {
+        cur[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j)
+        {
+            const Foam::label sub = prev[j - 1] + (a[i - 1] != b[j - 1]);
+            cur[j] = std::min(std::min(prev[j] + 1, cur[j - 1] + 1), sub);
+        }
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+// Every keyword of couplingProperties must be one this code reads: a typo
+// ("minVoidfraction") would otherwise fall back to a default or be
+// ignored without a word
+void checkKeywords(const Foam::dictionary& dict)
+{
+    using namespace Foam;
+    using namespace Foam::demCoupling;
+
+    wordList known
+    ({
+        "demScript", "demRestartScript", "voidFraction", "minVoidFraction",
+        "forces", "momentumCoupling", "outsideParticles"
+    });
+    for (const word& m : voidFractionModel::dictionaryConstructorTablePtr_->sortedToc())
+    {
+        known.append(m + "Coeffs");
+    }
+    for (const word& m : forceModel::dictionaryConstructorTablePtr_->sortedToc())
+    {
+        known.append(m + "Coeffs");
+    }
+
+    for (const word& key : dict.toc())
+    {
+        if (key == "FoamFile" || known.found(key))
+        {
+            continue;
+        }
+        word best;
+        label bestDistance = labelMax;
+        for (const word& k : known)
+        {
+            const label d = editDistance(key, k);
+            if (d < bestDistance)
+            {
+                bestDistance = d;
+                best = k;
+            }
+        }
+        FatalIOErrorInFunction(dict)
+            << "Unknown keyword '" << key << "' in " << dict.name() << nl;
+        if (bestDistance <= max(label(2), label(key.size()/3)))
+        {
+            FatalIOError << "    Did you mean '" << best << "'?" << nl;
+        }
+        FatalIOError
+            << "    Allowed: " << flatOutput(known) << exit(FatalIOError);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -157,6 +225,10 @@ Foam::demCoupling::particleCloud::particleCloud
     Uf_(),
     demSteps_(0),
     lastDemCount_(0),
+    outsidePolicy_("ignore"),
+    deletedNow_(0),
+    deletedTotal_(0),
+    cellsPerStep_(0),
     clock_(),
     demTime_(0),
     couplingTime_(0),
@@ -179,6 +251,18 @@ Foam::demCoupling::particleCloud::particleCloud
     Info<< "Coupling to the DEM (" << couplingDict_().objectPath() << ")"
         << endl;
 
+    checkKeywords(dict);
+
+    outsidePolicy_ = dict.getOrDefault<word>("outsideParticles", "ignore");
+    if (outsidePolicy_ != "ignore" && outsidePolicy_ != "delete")
+    {
+        FatalIOErrorInFunction(dict)
+            << "outsideParticles '" << outsidePolicy_ << "' in "
+            << dict.name() << ": allowed are ignore (no fluid force on a"
+            << " particle outside the fluid mesh, counted) and delete"
+            << " (removed from the DEM)" << exit(FatalIOError);
+    }
+
     // Models first (cheap, and their input errors come before the DEM's)
     voidFraction_ = voidFractionModel::New(dict, mesh);
     forces_ = forceModel::NewList(dict);
@@ -186,6 +270,30 @@ Foam::demCoupling::particleCloud::particleCloud
     locator_.reset(new particleLocator(mesh));
 
     engine_.reset(new demEngine(dict, mesh.time()));
+
+    // The DEM box must hold the whole fluid mesh: where it does not, a
+    // particle leaves the DEM while still in the fluid
+    {
+        const boundBox demBox(engine_->box());
+        const boundBox& meshBox = mesh.bounds();
+        const scalar tol = 1e-6*mag(meshBox.span());
+        if
+        (
+            cmptMin(meshBox.min() - demBox.min()) < -tol
+         || cmptMax(meshBox.max() - demBox.max()) > tol
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "The DEM box of " << engine_->script() << ", "
+                << demBox.min() << " to " << demBox.max() << ", does not"
+                << " cover the fluid mesh, " << meshBox.min() << " to "
+                << meshBox.max() << "." << nl
+                << "    Enlarge the region of create_box in the DEM script"
+                << " (it may be larger than the mesh, not smaller)."
+                << exit(FatalIOError);
+        }
+    }
+    engine_->checkTimeStep();
 
     // The particles' volume from the start, so that time 0 sees it
     updateParticles();
@@ -199,6 +307,27 @@ Foam::demCoupling::particleCloud::particleCloud
 void Foam::demCoupling::particleCloud::updateParticles()
 {
     engine_->gather(particles_);
+
+    forAll(particles_.position, i)
+    {
+        if
+        (
+            !std::isfinite(magSqr(particles_.position[i]))
+         || !std::isfinite(magSqr(particles_.velocity[i]))
+        )
+        {
+            FatalErrorInFunction
+                << "DEM particle " << particles_.tag[i] << " has a non-finite"
+                << " position " << particles_.position[i] << " or velocity "
+                << particles_.velocity[i] << " at t = "
+                << mesh_.time().timeName() << " s: the DEM blew up." << nl
+                << "    Check the DEM time step against the Rayleigh time"
+                << " printed at the start, and the overlaps of the initial"
+                << " packing. Results up to the last write time are kept."
+                << exit(FatalError);
+        }
+    }
+
     locator_->locate(particles_);
     voidFraction_->update(particles_, voidfraction_);
 }
@@ -467,6 +596,41 @@ void Foam::demCoupling::particleCloud::evolve()
     // 2-4. particle data, locate, void fraction
     updateParticles();
 
+    deletedNow_ = 0;
+    if (outsidePolicy_ == "delete" && locator_->lost())
+    {
+        DynamicList<label> tags;
+        forAll(particles_.hostProc, i)
+        {
+            if (particles_.hostProc[i] < 0)
+            {
+                tags.append(particles_.tag[i]);
+            }
+        }
+        engine_->deleteParticles(tags);
+        deletedNow_ = tags.size();
+        deletedTotal_ += deletedNow_;
+        updateParticles();
+    }
+
+    // How many cells a particle crosses per coupling step: above one, the
+    // fluid it sees jumps (and so do its forces)
+    cellsPerStep_ = 0;
+    forAll(particles_.cell, i)
+    {
+        const label c = particles_.cell[i];
+        if (c >= 0 && particles_.hostProc[i] == Pstream::myProcNo())
+        {
+            cellsPerStep_ = max
+            (
+                cellsPerStep_,
+                mag(particles_.velocity[i])*runTime.deltaTValue()
+               /cbrt(mesh_.V()[c])
+            );
+        }
+    }
+    reduce(cellsPerStep_, maxOp<scalar>());
+
     // 5-6. fluid at the particles, forces, fluid sources
     computeForces();
 
@@ -511,19 +675,37 @@ void Foam::demCoupling::particleCloud::report()
         }
         lastDemCount_ = particles_.size();
 
-        if (locator_->lost())
+        if (deletedNow_)
+        {
+            Info<< "Deleted " << deletedNow_ << " particle(s) outside the"
+                << " fluid mesh at t = " << runTime.timeName() << " s ("
+                << deletedTotal_ << " since the start; outsideParticles"
+                << " delete)" << endl;
+        }
+        else if (locator_->lost())
         {
             Info<< "Warning: " << locator_->lost() << " particle(s) outside"
                 << " the fluid mesh at t = " << runTime.timeName()
-                << " s: no fluid force on them" << endl;
+                << " s: no fluid force on them (outsideParticles ignore;"
+                << " 'delete' removes them from the DEM)" << endl;
         }
         if (voidFraction_->floorHits())
         {
             Info<< "Warning: voidfraction floor " << voidFraction_->minVoidFraction()
                 << " hit in " << voidFraction_->floorHits() << " cell(s) at"
                 << " t = " << runTime.timeName() << " s ("
-                << voidFraction_->totalFloorHits() << " since the start)"
-                << endl;
+                << voidFraction_->totalFloorHits() << " since the start):"
+                << " more particle volume than these cells hold. Use a"
+                << " void-fraction model that spreads wider (virtualSphere,"
+                << " diffusion) or larger cells; lowering minVoidFraction"
+                << " only hides it." << endl;
+        }
+        if (cellsPerStep_ > 1)
+        {
+            Info<< "Warning: a particle crossed " << cellsPerStep_
+                << " cells in one coupling step at t = " << runTime.timeName()
+                << " s: the fluid it sees jumps between steps. Reduce deltaT"
+                << " (fewer DEM steps per coupling step)." << endl;
         }
     }
 
@@ -592,6 +774,36 @@ void Foam::demCoupling::particleCloud::writeParticles() const
         (
             cloud.fieldIOobject("type", IOobject::NO_READ), type
         ).write();
+    }
+}
+
+
+void Foam::demCoupling::particleCloud::writeDemRestart()
+{
+    if (active())
+    {
+        engine_->writeRestart(mesh_.time());
+    }
+}
+
+
+void Foam::demCoupling::particleCloud::checkFinite()
+{
+    const volScalarField& p = mesh_.lookupObject<volScalarField>("p_rgh");
+    const scalar sum =
+        gSumMag(U_.primitiveField()) + gSumMag(p.primitiveField())
+      + gSumMag(voidfraction_.primitiveField());
+    if (!std::isfinite(sum))
+    {
+        Time& runTime = const_cast<Time&>(mesh_.time());
+        runTime.writeNow();
+        FatalErrorInFunction
+            << "NaN or Inf in the fluid fields (U, p_rgh or voidfraction) at"
+            << " t = " << runTime.timeName() << " s." << nl
+            << "    The fields of this time are written for inspection;"
+            << " results of earlier write times are kept." << nl
+            << "    Reduce deltaT (maxCo), check the boundary conditions, and"
+            << " look for voidfraction floor hits above." << exit(FatalError);
     }
 }
 
