@@ -96,7 +96,7 @@ sed -i 's/^minVoidFraction .*/minVoidFraction   low;/' constant/couplingProperti
 expectError wrongType "minVoidFraction" "couplingProperties"
 
 sed -i 's/^minVoidFraction .*/minVoidFraction   0;/' constant/couplingProperties
-expectError floorOutOfRange "minVoidFraction" "couplingProperties"
+expectError floorOutOfRange "minVoidFraction 0" "> 0 and < 1" "couplingProperties"
 
 sed -i 's/^forces .*/forces ( DiFeliceDrag DiFeliceDrag );/' constant/couplingProperties
 expectError forceTwice "listed twice" "forces"
@@ -109,11 +109,11 @@ expectError noVirtualSphereCoeffs "virtualSphereCoeffs" "couplingProperties"
 
 sed -i 's/^voidFraction .*/voidFraction      virtualSphere;/' constant/couplingProperties
 echo "virtualSphereCoeffs { diameterRatio 0.5; sizeThreshold 0.25; }" >> constant/couplingProperties
-expectError diameterRatioRange "diameterRatio" "couplingProperties"
+expectError diameterRatioRange "diameterRatio 0.5" ">= 1" "virtualSphereCoeffs"
 
 sed -i 's/^voidFraction .*/voidFraction      diffusion;/' constant/couplingProperties
 echo "diffusionCoeffs { bandwidth -0.003; nSteps 3; }" >> constant/couplingProperties
-expectError negativeBandwidth "bandwidth" "couplingProperties"
+expectError negativeBandwidth "bandwidth -0.003" "> 0" "diffusionCoeffs"
 
 echo "outsideParticles drop;" >> constant/couplingProperties
 expectError badOutsidePolicy "outsideParticles 'drop'" "ignore" "delete"

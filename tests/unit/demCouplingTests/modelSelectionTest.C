@@ -80,6 +80,8 @@ TEST(modelSelection, MinVoidFractionOutOfRange)
         );
         EXPECT_NE(msg.find("minVoidFraction"), std::string::npos)
             << "value " << bad << ": " << msg;
+        EXPECT_NE(msg.find("> 0 and < 1"), std::string::npos)
+            << "the allowed range is not named: " << msg;
     }
 }
 

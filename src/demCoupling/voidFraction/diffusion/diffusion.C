@@ -25,16 +25,20 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     centre(dict, mesh),
     bandwidth_
     (
-        dict.subDict("diffusionCoeffs").getCheck<scalar>
+        getAllowed<scalar>
         (
-            "bandwidth", [](const scalar b) { return b > 0; }
+            dict.subDict("diffusionCoeffs"), "bandwidth",
+            [](const scalar b) { return b > 0; },
+            "> 0 (the width, in m, over which a particle's volume spreads)"
         )
     ),
     nSteps_
     (
-        dict.subDict("diffusionCoeffs").getCheck<label>
+        getAllowed<label>
         (
-            "nSteps", [](const label n) { return n >= 1; }
+            dict.subDict("diffusionCoeffs"), "nSteps",
+            [](const label n) { return n >= 1; },
+            "a whole number >= 1 (implicit diffusion steps)"
         )
     ),
     solverControls_()

@@ -25,16 +25,21 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
     voidFractionModel(dict, mesh),
     diameterRatio_
     (
-        dict.subDict("virtualSphereCoeffs").getCheck<scalar>
+        getAllowed<scalar>
         (
-            "diameterRatio", [](const scalar k) { return k >= 1; }
+            dict.subDict("virtualSphereCoeffs"), "diameterRatio",
+            [](const scalar k) { return k >= 1; },
+            ">= 1 (virtual-sphere diameter / particle diameter; seed: 4)"
         )
     ),
     sizeThreshold_
     (
-        dict.subDict("virtualSphereCoeffs").getCheck<scalar>
+        getAllowed<scalar>
         (
-            "sizeThreshold", [](const scalar c) { return c > 0; }
+            dict.subDict("virtualSphereCoeffs"), "sizeThreshold",
+            [](const scalar c) { return c > 0; },
+            "> 0 (particles with d > sizeThreshold dx use the virtual"
+            " sphere; seed: 0.25)"
         )
     ),
     nSpread_(0)

@@ -19,10 +19,11 @@ Foam::demCoupling::voidFractionModel::voidFractionModel
     mesh_(mesh),
     minVoidFraction_
     (
-        dict.getCheck<scalar>
+        getAllowed<scalar>
         (
-            "minVoidFraction",
-            [](const scalar v) { return v > 0 && v < 1; }
+            dict, "minVoidFraction",
+            [](const scalar v) { return v > 0 && v < 1; },
+            "> 0 and < 1 (the smallest fluid fraction a cell keeps)"
         )
     ),
     cells_(),
