@@ -42,13 +42,20 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
             " sphere; seed: 0.25)"
         )
     ),
-    nSpread_(0)
+    nSpread_(0),
+    centreTree_()
 {
     Info<< "    virtual sphere: diameter " << diameterRatio_ << " d for"
         << " particles with d > " << sizeThreshold_ << " dx" << endl;
 
-    // The octree is built with collective calls: on every processor now
-    (void)mesh_.cellTree();
+    const pointField& centres = mesh_.C().primitiveField();
+    treeBoundBox bb(centres);
+    bb.min() -= vector::uniform(1e-6*mag(bb.span()) + VSMALL);
+    bb.max() += vector::uniform(1e-6*mag(bb.span()) + VSMALL);
+    centreTree_.reset
+    (
+        new indexedOctree<treeDataPoint>(treeDataPoint(centres), bb, 8, 10, 3.0)
+    );
 }
 
 
@@ -115,14 +122,11 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
             continue;
         }
 
-        // Candidate cells (bounding boxes reaching the sphere's box), kept
-        // where their centre is inside the sphere; the host always
+        // Cells whose centre is inside the sphere (the octree's candidates,
+        // from a slightly larger sphere, filtered exactly); the host always
         const labelList candidates
         (
-            mesh_.cellTree().findBox
-            (
-                treeBoundBox(x0 - vector::uniform(R), x0 + vector::uniform(R))
-            )
+            centreTree_->findSphere(x0, sqr(R)*(1 + 1e-9))
         );
         DynamicList<label> cells(candidates.size() + 1);
         DynamicList<scalar> w(candidates.size() + 1);
