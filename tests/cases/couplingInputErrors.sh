@@ -156,12 +156,16 @@ sed -i 's/^create_atoms .*/&\ncreate_atoms    1 single 0.01 0.01 0.25 units box/
 sed -i 's/^set             atom 1 .*/&\nset             atom 2 diameter 0.001 density 2500/' DEM/in.liggghts
 echo "outsideParticles delete;" >> constant/couplingProperties
 expectWarning outsideDeleted "Deleted 1 particle(s) outside the fluid mesh" "Particles: 1 in the DEM"
+! grep -q "left the DEM domain" log.outsideDeleted \
+    || fail "outsideDeleted: a deletion was also reported as a loss of LIGGGHTS"
 
 # the only particle deleted: the DEM runs on empty
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.3 units box/' DEM/in.liggghts
 sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.25 units box/' DEM/in.liggghts
 echo "outsideParticles delete;" >> constant/couplingProperties
 expectWarning outsideDeletedAll "Deleted 1 particle(s) outside the fluid mesh" "Particles: 0 in the DEM"
+! grep -q "left the DEM domain" log.outsideDeletedAll \
+    || fail "outsideDeletedAll: a deletion was also reported as a loss of LIGGGHTS"
 
 sed -i 's/^velocity .*/velocity        all set 0 0 -1e400 units box/' DEM/in.liggghts
 expectError nonFiniteParticle "non-finite position" "DEM blew up"

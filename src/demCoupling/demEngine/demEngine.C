@@ -73,17 +73,29 @@ void Foam::demCoupling::demEngine::scanScript
     const dictionary& dict,
     bool& haveCouple,
     bool& haveForce,
-    const label depth
+    const label depth,
+    const fileName& parent,
+    const label parentLine
 )
 {
     IFstream is(script);
     if (!is.good())
     {
         FatalIOErrorInFunction(dict)
-            << "Cannot open the DEM script " << script << nl
-            << "    (keyword demScript, or an 'include' in it; paths are"
-            << " relative to the case directory)"
-            << exit(FatalIOError);
+            << "Cannot open the DEM script " << script << nl;
+        if (parent.empty())
+        {
+            FatalIOError
+                << "    (keyword demScript, or demRestartScript when"
+                << " restarting; relative to the case directory)";
+        }
+        else
+        {
+            FatalIOError
+                << "    (include on line " << parentLine << " of " << parent
+                << "; paths are relative to the case directory)";
+        }
+        FatalIOError << exit(FatalIOError);
     }
     if (depth > 16)
     {
@@ -111,13 +123,21 @@ void Foam::demCoupling::demEngine::scanScript
 
         if (w.size() == 2 && w[0] == "include")
         {
-            fileName inc(w[1]);
-            inc.expand();
-            if (!inc.isAbsolute())
+            // A path with LIGGGHTS variables (${dir}/in.x) is left to the
+            // check on the live instance
+            if (w[1].find('$') == std::string::npos)
             {
-                inc = caseDir/inc;
+                fileName inc(w[1]);
+                if (!inc.isAbsolute())
+                {
+                    inc = caseDir/inc;
+                }
+                scanScript
+                (
+                    inc, caseDir, dict, haveCouple, haveForce, depth + 1,
+                    script, lineNo
+                );
             }
-            scanScript(inc, caseDir, dict, haveCouple, haveForce, depth + 1);
             continue;
         }
         if (w.size() < 4 || w[0] != "fix")
@@ -475,8 +495,17 @@ void Foam::demCoupling::demEngine::checkTimeStep() const
             EMin = Ei;
         }
     }
-    const double tRLocal = tR;
-    MPI_Allreduce(&tRLocal, &tR, 1, MPI_DOUBLE, MPI_MIN, solverComm());
+    // The smallest over ranks, with the d and E of that particle from the
+    // rank that holds it
+    struct { double value; int rank; } local, global;
+    local.value = tR;
+    MPI_Comm_rank(solverComm(), &local.rank);
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, solverComm());
+    tR = global.value;
+    double dE[2] = {rMin, EMin};
+    MPI_Bcast(dE, 2, MPI_DOUBLE, global.rank, solverComm());
+    rMin = dE[0];
+    EMin = dE[1];
     if (tR >= GREAT)
     {
         return;   // no particles yet

@@ -610,6 +610,8 @@ void Foam::demCoupling::particleCloud::evolve()
         engine_->deleteParticles(tags);
         deletedNow_ = tags.size();
         deletedTotal_ += deletedNow_;
+        // not a loss LIGGGHTS made: keep it out of the "left the DEM" count
+        lastDemCount_ -= deletedNow_;
         updateParticles();
     }
 
@@ -790,16 +792,31 @@ void Foam::demCoupling::particleCloud::writeDemRestart()
 void Foam::demCoupling::particleCloud::checkFinite()
 {
     const volScalarField& p = mesh_.lookupObject<volScalarField>("p_rgh");
-    const scalar sum =
-        gSumMag(U_.primitiveField()) + gSumMag(p.primitiveField())
-      + gSumMag(voidfraction_.primitiveField());
-    if (!std::isfinite(sum))
+    // One reduction for the three fields; the names of the bad ones
+    scalarList sums
+    ({
+        sumMag(U_.primitiveField()),
+        sumMag(p.primitiveField()),
+        sumMag(voidfraction_.primitiveField())
+    });
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+    const wordList names({U_.name(), p.name(), voidfraction_.name()});
+    wordList bad;
+    forAll(sums, i)
+    {
+        if (!std::isfinite(sums[i]))
+        {
+            bad.append(names[i]);
+        }
+    }
+    if (bad.size())
     {
         Time& runTime = const_cast<Time&>(mesh_.time());
         runTime.writeNow();
         FatalErrorInFunction
-            << "NaN or Inf in the fluid fields (U, p_rgh or voidfraction) at"
-            << " t = " << runTime.timeName() << " s." << nl
+            << "NaN or Inf in the fluid field(s) " << flatOutput(bad)
+            << " at t = " << runTime.timeName() << " s." << nl
             << "    The fields of this time are written for inspection;"
             << " results of earlier write times are kept." << nl
             << "    Reduce deltaT (maxCo), check the boundary conditions, and"

@@ -43,18 +43,18 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
         )
     ),
     nSpread_(0),
+    centres_(mesh.C().primitiveField()),
     centreTree_()
 {
     Info<< "    virtual sphere: diameter " << diameterRatio_ << " d for"
         << " particles with d > " << sizeThreshold_ << " dx" << endl;
 
-    const pointField& centres = mesh_.C().primitiveField();
-    treeBoundBox bb(centres);
+    treeBoundBox bb(centres_);
     bb.min() -= vector::uniform(1e-6*mag(bb.span()) + VSMALL);
     bb.max() += vector::uniform(1e-6*mag(bb.span()) + VSMALL);
     centreTree_.reset
     (
-        new indexedOctree<treeDataPoint>(treeDataPoint(centres), bb, 8, 10, 3.0)
+        new indexedOctree<treeDataPoint>(treeDataPoint(centres_), bb, 8, 10, 3.0)
     );
 }
 
