@@ -8,7 +8,8 @@
 #   3. restarted with startFrom latestTime to 0.16 s: the particle position
 #      and velocity and the fields U, p_rgh, alpha.water, voidfraction at
 #      0.16 s agree with run 1 to 1e-6 relative; the particle history
-#      (particleHistory.dat, appended) has no gap.
+#      (particleHistory.dat, appended) has no gap;
+#   3b. the same in parallel (2 ranks, processor0/<time>/liggghts.restart).
 # Then a settled packing at rest stays at rest across a restart (contact
 # histories survive): checked in restartPacking below.
 #------------------------------------------------------------------------------
@@ -104,6 +105,30 @@ if gaps:
 sys.exit(0 if worst < 1e-6 else 1)
 PYEOF
 echo "settling column: restart after SIGKILL loses nothing, end state as the uninterrupted run's"
+
+# 3b. The same in parallel (2 METIS ranks): the DEM state goes to
+# processor0/<time>/liggghts.restart; run to 0.06 s, restart -parallel to
+# 0.1 s, particle at 0.1 s as in the serial uninterrupted run (1e-6)
+cd "$runDir" || fail "cd"
+rm -rf restart-parallel && cp -r restart-reference restart-parallel
+cd restart-parallel || fail "cd"
+rm -rf 0.[0-9]* 0.1[0-9]* log.* particleHistory.dat processor* postProcessing
+setEntry system/controlDict endTime 0.06
+runApplication decomposePar || fail "decomposePar"
+runParallel interDemFoam || fail "parallel run to 0.06 (log.interDemFoam)"
+[ -f processor0/0.06/liggghts.restart ] || fail "no processor0/0.06/liggghts.restart"
+setEntry system/controlDict startFrom latestTime
+setEntry system/controlDict endTime 0.1
+runParallel -s 2 interDemFoam || fail "parallel restart (log.interDemFoam.2)"
+grep -q "DEM: restarting from .*processor0/0.06/liggghts.restart" log.interDemFoam.2 \
+    || fail "the parallel run did not restart the DEM"
+ref=$(awk '$1 > 0.0999 && $1 < 0.1001' ../restart-reference/particleHistory.dat | tail -n 1)
+got=$(awk '$1 > 0.0999 && $1 < 0.1001' particleHistory.dat | tail -n 1)
+awk -v r="$ref" -v g="$got" 'BEGIN {
+    split(r, a); split(g, b)
+    for (k = 2; k <= 3; k++) { d = (a[k] - b[k])/a[k]; if (d < 0) d = -d; if (d > m) m = d }
+    printf "parallel restart: particle at t = 0.1 s z %s vz %s vs serial %s %s, largest relative difference %.3e\n", b[2], b[3], a[2], a[3], m
+    exit !(m < 1e-6) }' || fail "parallel restart differs from the serial uninterrupted run"
 
 # 4. A packing at rest stays at rest across a restart: 825 beads poured
 # into the 12 mm packedBed column, water at rest, integrated (in.fluidize).
