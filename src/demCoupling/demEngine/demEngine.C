@@ -564,14 +564,6 @@ void Foam::demCoupling::demEngine::gather(particleData& particles)
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     const int nLocal = atom.nlocal;
 
-    // Periodic DEM directions: LIGGGHTS maps atoms back into the box only
-    // when it rebuilds its neighbour lists, so between rebuilds a position
-    // may lie up to half the skin beyond a periodic face; wrap it (the
-    // fluid mesh there has the matching cyclic patches)
-    const LAMMPS_NS::Domain& domain = *lmp_->domain;
-    const int periodic[3] =
-        {domain.xperiodic, domain.yperiodic, domain.zperiodic};
-
     // Pack: tag type x(3) v(3) omega(3) d rho
     constexpr int nValues = 13;
     std::vector<double> send(nValues*nLocal);
@@ -581,15 +573,15 @@ void Foam::demCoupling::demEngine::gather(particleData& particles)
         const double r = atom.radius[i];
         s[0] = atom.tag[i];
         s[1] = atom.type[i];
+        // LIGGGHTS maps atoms back into a periodic box only when it
+        // rebuilds its neighbour lists: between rebuilds a position may lie
+        // up to half the skin beyond a periodic face. Wrapped here (periodic
+        // directions only; the fluid mesh has the matching cyclic patches)
+        double x[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
+        lmp_->domain->remap(x);
         for (int k = 0; k < 3; ++k)
         {
-            double x = atom.x[i][k];
-            if (periodic[k])
-            {
-                const double lo = domain.boxlo[k], len = domain.prd[k];
-                x -= len*std::floor((x - lo)/len);
-            }
-            s[2 + k] = x;
+            s[2 + k] = x[k];
             s[5 + k] = atom.v[i][k];
             s[8 + k] = atom.omega ? atom.omega[i][k] : 0.0;
         }

@@ -1,4 +1,5 @@
 #include "GidaspowDrag.H"
+#include "SchillerNaumannDrag.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 
@@ -48,18 +49,10 @@ Foam::demCoupling::forceModels::GidaspowDrag::force
     }
     else
     {
-        // 3/4 Cd rho |u-v|/d V_p eps^-1.65; for Re < 1000 written as
-        // 3 pi mu d (1 + 0.15 Re^0.687) eps^-2.65, finite as Re -> 0
+        // 3/4 Cd rho |u-v|/d V_p eps^-1.65 with Cd of Re = eps d rho |u-v|/mu:
+        // Cd Re pi mu d/8 eps^-2.65, finite as Re -> 0
         const scalar Re = s.eps*s.d*s.rhoF*magUr/s.muF;
-        if (Re < 1000)
-        {
-            f.K = 3*pi*s.muF*s.d*(1 + 0.15*pow(Re, 0.687))
-               *pow(s.eps, -2.65);
-        }
-        else
-        {
-            f.K = 0.75*0.44*s.rhoF*magUr/s.d*Vp*pow(s.eps, -1.65);
-        }
+        f.K = SchillerNaumannDrag::CdRe(Re)*pi*s.muF*s.d/8*pow(s.eps, -2.65);
     }
 
     return f;

@@ -24,6 +24,15 @@ Foam::demCoupling::forceModels::SchillerNaumannDrag::SchillerNaumannDrag
 {}
 
 
+Foam::scalar Foam::demCoupling::forceModels::SchillerNaumannDrag::CdRe
+(
+    const scalar Re
+)
+{
+    return Re < 1000 ? 24*(1 + 0.15*pow(Re, 0.687)) : 0.44*Re;
+}
+
+
 Foam::demCoupling::particleForce
 Foam::demCoupling::forceModels::SchillerNaumannDrag::force
 (
@@ -35,15 +44,9 @@ Foam::demCoupling::forceModels::SchillerNaumannDrag::force
     const scalar magUr = mag(s.Uf - s.Up);
     const scalar Re = s.d*s.rhoF*magUr/s.muF;
 
+    // K = 1/2 Cd rho (pi d^2/4) |u - v| = Cd Re pi mu d/8: finite at Re = 0
     particleForce f;
-    if (Re < 1000)
-    {
-        f.K = 3*pi*s.muF*s.d*(1 + 0.15*pow(Re, 0.687));
-    }
-    else
-    {
-        f.K = 0.5*0.44*s.rhoF*pi/4*sqr(s.d)*magUr;
-    }
+    f.K = CdRe(Re)*pi*s.muF*s.d/8;
     return f;
 }
 
