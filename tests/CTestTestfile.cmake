@@ -62,3 +62,7 @@ set_tests_properties(case.fluidizedBedAlpha PROPERTIES LABELS "case;coupled" TIM
 # an uninterrupted run; a packing at rest stays at rest across a restart
 add_test(case.restart "bash" "cases/restart.sh")
 set_tests_properties(case.restart PROPERTIES LABELS "case;coupled;reliability" TIMEOUT 600)
+
+# Landslide dam breach, tiny: pour, overtop, erode, analyse; water balance 1 %
+add_test(case.damBreach "bash" "cases/damBreach.sh")
+set_tests_properties(case.damBreach PROPERTIES LABELS "case;coupled;damBreach" TIMEOUT 900)

@@ -176,6 +176,10 @@ void Foam::demCoupling::demEngine::scanScript
         {
             haveForce = true;
         }
+        else if (w[3].compare(0, 7, "insert/") == 0)
+        {
+            inserts_ = true;
+        }
     }
 }
 
@@ -239,6 +243,9 @@ Foam::demCoupling::demEngine::demEngine
     ownsMPI_(false),
     firstRun_(true),
     restarted_(false),
+    started_(false),
+    inserts_(false),
+    emptied_(false),
     counts_(),
     offsets_()
 {
@@ -541,6 +548,22 @@ Foam::label Foam::demCoupling::demEngine::nParticles() const
 
 void Foam::demCoupling::demEngine::advance(const label nSteps)
 {
+    // Every particle gone (carried out of the domain) and none to come: the
+    // DEM has nothing left to do. It is not run again: LIGGGHTS cannot set
+    // up a granular run whose only atom types are the walls' (it stops with
+    // "Atom types must start from 1"), and the fluid goes on without it.
+    if (emptied_)
+    {
+        return;
+    }
+    if (started_ && !inserts_ && nParticles() == 0)
+    {
+        emptied_ = true;
+        Info<< "DEM: no particle left and the script inserts none: the DEM"
+            << " is no longer advanced; the fluid goes on alone" << endl;
+        return;
+    }
+
     // The first run sets LIGGGHTS up; later ones continue where it stopped
     const std::string cmd
     (
@@ -554,6 +577,7 @@ void Foam::demCoupling::demEngine::advance(const label nSteps)
     }
 
     firstRun_ = false;
+    started_ = true;
 }
 
 

@@ -1,0 +1,381 @@
+#!/usr/bin/python3
+"""Landslide dam breach: the seed's analysis (Figs. 6-11) from one run.
+
+    damBreachAnalysis.py CASE                 one run: tables and plots in CASE
+    damBreachAnalysis.py compare OUT CASE...  several runs side by side
+
+Reads the DEM dumps CASE/post/particles.<step>.txt and contacts.<step>.txt
+(DEM/in.dam writes them; step x 1e-4 s is the time) and the water function
+objects in CASE/postProcessing. Writes, in CASE:
+
+  damBreach.dat      per dump: t, dam height H (eq. 21's H), its rate
+                     (H(t+1) - H(t))/dt (eq. 21), dimensionless total energy
+                     [E] (eq. 20) and its parts, grains left, mean normal and
+                     tangential contact force, mean particle-fluid force, and
+                     the water discharges in and out
+  profiles.dat       longitudinal profiles (surface of the resting grains)
+                     at chosen times: x, then one column per time
+  damBreach.summary  initial and residual height, peak rate, final [E],
+                     grains carried out, water balance closure
+  damBreach.png, profiles.png
+
+Definitions (the seed leaves them open; these are ours):
+  surface h(x)  the top (z + r) of the highest grain at rest (|v| < 0.05 m/s)
+                in each 50 mm bin along the flume, z normal to the bed;
+                grains in transport are not the dam
+  dam height H  max over x of h(x)
+  [E]           (sum m g.h + 1/2 sum m v^2 + 1/2 sum I w^2)/E(t=0), heights
+                measured upwards (against g) from the bed at the outlet, so
+                every term is positive; I = 2/5 m r^2; grains carried out of
+                the flume take their energy with them
+  contact force mean |F_n| and |F_t| over the grain-grain contacts
+  fluid force   mean |F_f| over the grains (drag + pressure gradient)
+  water balance V(t_end) - V(t_1) against the integral of (Q_in - Q_out -
+                Q_top) dt, relative to the water that came in
+"""
+import glob
+import os
+import re
+import sys
+
+import numpy as np
+
+DEM_DT = 1e-4          # DEM step (DEM/in.dam)
+REST_SPEED = 0.05      # m/s: a grain slower than this is part of the bed
+BIN = 0.05             # m: profile bins (the CFD cell size)
+FLUME_LENGTH = 7.0
+
+
+def read_gravity(case):
+    text = open(os.path.join(case, 'constant', 'g')).read()
+    m = re.search(r'value\s*\(\s*([-\d.eE+]+)\s+([-\d.eE+]+)\s+([-\d.eE+]+)', text)
+    return np.array([float(v) for v in m.groups()])
+
+
+def dump_files(case, kind):
+    files = glob.glob(os.path.join(case, 'post', kind + '.*.txt'))
+    steps = [int(re.search(r'\.(\d+)\.txt$', f).group(1)) for f in files]
+    order = np.argsort(steps)
+    return [(steps[i]*DEM_DT, files[i]) for i in order]
+
+
+def read_dump(path):
+    """The rows of a LIGGGHTS text dump (per-atom or local)."""
+    with open(path) as f:
+        lines = f.readlines()
+    start = next(i for i, l in enumerate(lines) if l.startswith('ITEM: ATOMS')
+                 or l.startswith('ITEM: ENTRIES')) + 1
+    rows = [l.split() for l in lines[start:] if l.strip()]
+    if not rows:
+        return np.zeros((0, 0))
+    return np.array(rows, dtype=float)
+
+
+def surface_profile(p, edges):
+    """Top of the resting grains in each bin (0 where none)."""
+    x, z, r = p[:, 3], p[:, 5], p[:, 1]
+    speed = np.linalg.norm(p[:, 6:9], axis=1)
+    rest = speed < REST_SPEED
+    h = np.zeros(len(edges) - 1)
+    idx = np.digitize(x[rest], edges) - 1
+    top = z[rest] + r[rest]
+    ok = (idx >= 0) & (idx < len(h))
+    np.maximum.at(h, idx[ok], top[ok])
+    return h
+
+
+def energy(p, g):
+    m, r = p[:, 2], p[:, 1]
+    pos = p[:, 3:6].copy()
+    pos[:, 0] -= FLUME_LENGTH                      # datum: bed at the outlet
+    ep = -np.sum(m*(pos @ g))
+    ek = 0.5*np.sum(m*np.sum(p[:, 6:9]**2, axis=1))
+    er = 0.5*np.sum(0.4*m*r**2*np.sum(p[:, 9:12]**2, axis=1))
+    return ep, ek, er
+
+
+def read_series(case, name, column):
+    """A function object's time series, joined over restarts."""
+    rows = {}
+    for d in sorted(glob.glob(os.path.join(case, 'postProcessing', name, '*')),
+                    key=lambda s: float(os.path.basename(s))):
+        for f in glob.glob(os.path.join(d, '*.dat')):
+            for line in open(f):
+                if line.startswith('#') or not line.strip():
+                    continue
+                w = line.split()
+                rows[float(w[0])] = float(w[column])
+    t = np.array(sorted(rows))
+    return t, np.array([rows[k] for k in t])
+
+
+def water_balance(case):
+    t, vol = read_series(case, 'waterVolume', 1)
+    if len(t) < 3:
+        return None
+    series = {}
+    for name in ('inletFlux', 'outletFlux', 'atmosphereFlux'):
+        tt, q = read_series(case, name, 1)
+        series[name] = np.interp(t, tt, q)
+    qin = -series['inletFlux']               # patch fluxes point outwards
+    qout = series['outletFlux']
+    qtop = series['atmosphereFlux']
+    dt = np.diff(t)
+    vin = np.sum(qin[1:]*dt)
+    vout = np.sum(qout[1:]*dt)
+    vtop = np.sum(qtop[1:]*dt)
+    dstore = vol[-1] - vol[0]
+    return dict(t=t, vol=vol, qin=qin, qout=qout, qtop=qtop, vin=vin,
+                vout=vout, vtop=vtop, dstore=dstore,
+                error=(vin - vout - vtop - dstore)/max(vin, 1e-30))
+
+
+def lake_level(case):
+    """Bed-normal lake depth at x = 2.975 m: sum of alpha dz over the probe
+    column (probes lakeLevel, 50 mm cells), or None without the probes."""
+    rows = {}
+    for d in glob.glob(os.path.join(case, 'postProcessing', 'lakeLevel', '*')):
+        f = os.path.join(d, 'alpha.water')
+        if not os.path.isfile(f):
+            continue
+        for line in open(f):
+            if line.startswith('#') or not line.strip():
+                continue
+            w = line.split()
+            rows[float(w[0])] = sum(float(a) for a in w[1:])*0.05
+    if len(rows) < 2:
+        return None
+    t = np.array(sorted(rows))
+    return t, np.array([rows[k] for k in t])
+
+
+def smooth(t, q, window):
+    """Moving average over a time window (the per-step fluxes jitter)."""
+    if len(t) < 2:
+        return q
+    n = max(1, int(round(window/np.median(np.diff(t)))))
+    kernel = np.ones(n)
+    # divided by the number of samples in the window: no dip at the ends
+    return np.convolve(q, kernel, mode='same') \
+        / np.convolve(np.ones_like(q), kernel, mode='same')
+
+
+def analyse(case):
+    g = read_gravity(case)
+    dumps = dump_files(case, 'particles')
+    if len(dumps) < 2:
+        sys.exit('damBreachAnalysis: fewer than two dumps in %s/post '
+                 '(particles.<step>.txt): did the run start?' % case)
+    contacts = dict(dump_files(case, 'contacts'))
+    edges = np.arange(0.0, FLUME_LENGTH + BIN/2, BIN)
+    centres = 0.5*(edges[1:] + edges[:-1])
+
+    rows, profiles, crest_x = [], [], []
+    for t, path in dumps:
+        p = read_dump(path)
+        if p.size == 0:
+            continue
+        h = surface_profile(p, edges)
+        ep, ek, er = energy(p, g)
+        ff = np.mean(np.linalg.norm(p[:, 12:15], axis=1))
+        fn = ft = 0.0
+        nc = 0
+        if t in contacts:
+            c = read_dump(contacts[t])
+            if c.size:
+                fn = np.mean(np.linalg.norm(c[:, 0:3], axis=1))
+                ft = np.mean(np.linalg.norm(c[:, 3:6], axis=1))
+                nc = len(c)
+        rows.append([t, h.max(), ep + ek + er, ek, er, ep, len(p),
+                     np.sum(p[:, 2]), fn, ft, ff, nc])
+        profiles.append((t, h))
+        crest_x.append(centres[np.argmax(h)])
+    rows = np.array(rows)
+    t, height = rows[:, 0], rows[:, 1]
+    e0 = rows[0, 2]
+    rate = np.zeros_like(height)
+    rate[:-1] = np.diff(height)/np.diff(t)          # eq. 21, forward
+    rate[-1] = np.nan
+
+    wb = water_balance(case)
+    if wb:
+        qin = np.interp(t, wb['t'], smooth(wb['t'], wb['qin'], 0.5))
+        qout = np.interp(t, wb['t'], smooth(wb['t'], wb['qout'], 0.5))
+    else:
+        qin = qout = np.full_like(t, np.nan)
+
+    # Freeboard: real-world elevation of the crest minus that of the lake
+    # surface at x = 2.975 m (elevation = z cos(b) - x sin(b), b the slope
+    # of the bed from the gravity vector); overtopping when it turns negative
+    slope = np.arctan2(g[0], -g[2])
+    lake = lake_level(case)
+    if lake:
+        depth = np.interp(t, lake[0], lake[1])
+        freeboard = (height*np.cos(slope) - np.array(crest_x)*np.sin(slope)) \
+            - (depth*np.cos(slope) - 2.975*np.sin(slope))
+    else:
+        depth = freeboard = np.full_like(t, np.nan)
+
+    table = np.column_stack([t, height, rate, rows[:, 2]/e0, rows[:, 3],
+                             rows[:, 4], rows[:, 5], rows[:, 6], rows[:, 7],
+                             rows[:, 8], rows[:, 9], rows[:, 10], rows[:, 11],
+                             qin, qout, depth, freeboard])
+    np.savetxt(os.path.join(case, 'damBreach.dat'), table, fmt='%.6g',
+               header='t[s] H[m] eq21_rate[m/s] E/E0 Ek[J] Erot[J] Ep[J] '
+                      'grains mass[kg] Fn_mean[N] Ft_mean[N] Ff_mean[N] '
+                      'contacts Qin[m3/s] Qout[m3/s] lake_depth[m] '
+                      'freeboard[m]')
+
+    # Profiles at six times spread over the run
+    pick = np.unique(np.linspace(0, len(profiles) - 1, 6).round().astype(int))
+    ptab = np.column_stack([centres] + [profiles[i][1] for i in pick])
+    np.savetxt(os.path.join(case, 'profiles.dat'), ptab, fmt='%.5g',
+               header='x[m] ' + ' '.join('h(t=%gs)[m]' % profiles[i][0]
+                                         for i in pick))
+
+    tail = t >= t[0] + 0.9*(t[-1] - t[0])
+    summary = {
+        'end time [s]': t[-1],
+        'initial dam height H0 [m]': height[0],
+        'residual dam height (last 10 % of the run) [m]': height[tail].mean(),
+        'height reduction [%]': 100*(1 - height[tail].mean()/height[0]),
+        'peak lowering rate -dH/dt [m/s]': -np.nanmin(rate),
+        'final [E]': rows[-1, 2]/e0,
+        'grains at start': int(rows[0, 6]),
+        'grains carried out of the flume': int(rows[0, 6] - rows[-1, 6]),
+        'largest grain displacement [m]': max_displacement(dumps),
+    }
+    over = np.nonzero(freeboard < 0)[0]
+    summary['overtopping from t [s] (-1: none)'] = t[over[0]] if len(over) else -1
+    if len(over):
+        summary['dam height at overtopping [m]'] = height[over[0]]
+        summary['height lost after overtopping [m]'] = \
+            height[over[0]] - height[tail].mean()
+    if wb:
+        summary.update({
+            'water in [m3]': wb['vin'],
+            'water out, outlet [m3]': wb['vout'],
+            'water out, top [m3]': wb['vtop'],
+            'storage change [m3]': wb['dstore'],
+            'water balance error (in - out - storage)/in [%]': 100*wb['error'],
+            'mean outflow, last 10 % [m3/s]': np.mean(
+                wb['qout'][wb['t'] >= wb['t'][0] + 0.9*(wb['t'][-1] - wb['t'][0])]),
+        })
+    with open(os.path.join(case, 'damBreach.summary'), 'w') as f:
+        for k, v in summary.items():
+            f.write('%-52s %.6g\n' % (k, v))
+    for k, v in summary.items():
+        print('%-52s %.6g' % (k, v))
+
+    plot_case(case, table, centres, [profiles[i] for i in pick], wb)
+
+
+def max_displacement(dumps):
+    first, last = read_dump(dumps[0][1]), read_dump(dumps[-1][1])
+    pos0 = {int(row[0]): row[3:6] for row in first}
+    d = [np.linalg.norm(row[3:6] - pos0[int(row[0])]) for row in last
+         if int(row[0]) in pos0]
+    return max(d) if d else 0.0
+
+
+def plot_case(case, table, centres, profiles, wb):
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+
+    name = os.path.basename(os.path.abspath(case))
+    t = table[:, 0]
+    fig, ax = plt.subplots(2, 3, figsize=(15, 8))
+    ax[0, 0].plot(t, table[:, 1]*1000, 'k-', label='dam height H')
+    if not np.all(np.isnan(table[:, 16])):
+        ax[0, 0].plot(t, (table[:, 1] - table[:, 16])*1000, 'b--',
+                      label='lake level at the crest')
+        ax[0, 0].legend(fontsize=8)
+    ax[0, 0].set(xlabel='t [s]', ylabel='dam height H [mm]',
+                 title='Dam height (seed Fig. 10)')
+    ax[0, 1].plot(t, table[:, 2]*1000, 'b-')
+    ax[0, 1].axhline(0, color='grey', lw=0.5)
+    ax[0, 1].set(xlabel='t [s]', ylabel='(H(t+1) - H(t))/dt [mm/s]',
+                 title='Height change rate, eq. 21 (Fig. 11)')
+    ax[0, 2].plot(t, table[:, 3], 'r-')
+    ax[0, 2].set(xlabel='t [s]', ylabel='[E] = E/E(0)',
+                 title='Dimensionless total energy, eq. 20 (Fig. 8)')
+    ax[1, 0].plot(t, table[:, 9], label='normal contact |F_n|')
+    ax[1, 0].plot(t, table[:, 10], label='tangential contact |F_t|')
+    ax[1, 0].plot(t, table[:, 11], label='particle-fluid |F_f|')
+    ax[1, 0].set(xlabel='t [s]', ylabel='mean force [N]',
+                 title='Forces (seed Fig. 7)')
+    ax[1, 0].legend(fontsize=8)
+    for tp, h in profiles:
+        ax[1, 1].plot(centres, h*1000, label='t = %g s' % tp)
+    ax[1, 1].set(xlim=(2.5, 7), xlabel='x along the bed [m]',
+                 ylabel='surface of resting grains [mm]',
+                 title='Longitudinal profiles (seed Fig. 9)')
+    ax[1, 1].legend(fontsize=8)
+    if wb:
+        ax[1, 2].plot(wb['t'], smooth(wb['t'], wb['qin'], 0.5)*1000,
+                      label='inflow')
+        ax[1, 2].plot(wb['t'], smooth(wb['t'], wb['qout'], 0.5)*1000,
+                      label='outflow (outlet)')
+        ax[1, 2].legend(fontsize=8)
+    ax[1, 2].set(xlabel='t [s]', ylabel='discharge [l/s] (0.5 s mean)',
+                 title='Water discharge')
+    fig.suptitle('Landslide dam breach, %s' % name)
+    fig.tight_layout()
+    fig.savefig(os.path.join(case, 'damBreach.png'), dpi=110)
+
+    fig, axp = plt.subplots(figsize=(9, 4))
+    for tp, h in profiles:
+        axp.plot(centres, h*1000, label='t = %g s' % tp)
+    axp.set(xlim=(2.5, 7), xlabel='x along the bed [m]',
+            ylabel='surface of resting grains, normal to the bed [mm]',
+            title='Breach morphology, %s (seed Fig. 9)' % name)
+    axp.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(case, 'profiles.png'), dpi=110)
+
+
+def compare(out, cases):
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
+    lines = []
+    for case in cases:
+        d = np.loadtxt(os.path.join(case, 'damBreach.dat'))
+        name = os.path.basename(os.path.abspath(case))
+        ax[0].plot(d[:, 0], d[:, 1]*1000, label=name)
+        ax[1].plot(d[:, 0], d[:, 3], label=name)
+        ax[2].plot(d[:, 0], d[:, 14]*1000, label=name)
+        s = {k.strip(): float(v) for k, v in
+             (l.rstrip().rsplit(None, 1) for l in
+              open(os.path.join(case, 'damBreach.summary')))}
+        lines.append('%-12s residual H %.4f m (H0 %.4f m, -%.1f %%), final '
+                     '[E] %.3f, grains out %d, water balance %.3f %%'
+                     % (name, s['residual dam height (last 10 % of the run) [m]'],
+                        s['initial dam height H0 [m]'],
+                        s['height reduction [%]'], s['final [E]'],
+                        s['grains carried out of the flume'],
+                        s.get('water balance error (in - out - storage)/in [%]',
+                              float('nan'))))
+    ax[0].set(xlabel='t [s]', ylabel='dam height H [mm]',
+              title='Dam height (seed Fig. 10)')
+    ax[1].set(xlabel='t [s]', ylabel='[E]', title='Total energy, eq. 20 (Fig. 8)')
+    ax[2].set(xlabel='t [s]', ylabel='outflow [l/s]', title='Outflow discharge')
+    for a in ax:
+        a.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out + '.png', dpi=110)
+    with open(out + '.txt', 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+    print('\n'.join(lines))
+
+
+if __name__ == '__main__':
+    if len(sys.argv) >= 4 and sys.argv[1] == 'compare':
+        compare(sys.argv[2], sys.argv[3:])
+    elif len(sys.argv) == 2:
+        analyse(sys.argv[1])
+    else:
+        sys.exit(__doc__)
