@@ -407,6 +407,15 @@ Foam::boundBox Foam::demCoupling::demEngine::box() const
 
 void Foam::demCoupling::demEngine::writeRestart(const Time& runTime)
 {
+    // An emptied DEM cannot be written either (LIGGGHTS's write_restart
+    // sets the system up and stops on it): a later restart from this time
+    // says that the DEM state is missing
+    if (emptied_)
+    {
+        Info<< "DEM: no particle left, no DEM restart file written at t = "
+            << runTime.timeName() << " s" << endl;
+        return;
+    }
     // Written to a temporary name, then renamed: a run killed while
     // writing leaves no half restart file under the real name
     const fileName file(restartFile(runTime, runTime.timeName()));

@@ -213,6 +213,7 @@ def analyse(case):
         depth = np.interp(t, lake[0], lake[1])
         freeboard = (height*np.cos(slope) - np.array(crest_x)*np.sin(slope)) \
             - (depth*np.cos(slope) - 2.975*np.sin(slope))
+        freeboard[height <= 0] = np.nan          # no dam left: no crest
     else:
         depth = freeboard = np.full_like(t, np.nan)
 
