@@ -66,3 +66,8 @@ set_tests_properties(case.restart PROPERTIES LABELS "case;coupled;reliability" T
 # Landslide dam breach, tiny: pour, overtop, erode, analyse; water balance 1 %
 add_test(case.damBreach "bash" "cases/damBreach.sh")
 set_tests_properties(case.damBreach PROPERTIES LABELS "case;coupled;damBreach" TIMEOUT 900)
+
+# allReduce and manyToMany particle exchanges: the same fields, forces and
+# DEM state on 2 ranks, to all digits
+add_test(case.exchangeIdentical "bash" "cases/exchangeIdentical.sh")
+set_tests_properties(case.exchangeIdentical PROPERTIES LABELS "case;coupled;parallel" TIMEOUT 600)

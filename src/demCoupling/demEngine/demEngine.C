@@ -246,8 +246,7 @@ Foam::demCoupling::demEngine::demEngine
     started_(false),
     inserts_(false),
     emptied_(false),
-    counts_(),
-    offsets_()
+    nOwned_(0)
 {
     // Paths of the DEM script (and inside it) are relative to the case
     const fileName caseDir(runTime.globalPath());
@@ -590,77 +589,38 @@ void Foam::demCoupling::demEngine::advance(const label nSteps)
 }
 
 
-void Foam::demCoupling::demEngine::gather(particleData& particles)
+void Foam::demCoupling::demEngine::ownedParticles(particleData& owned)
 {
     using constant::mathematical::pi;
 
     const LAMMPS_NS::Atom& atom = *lmp_->atom;
     const int nLocal = atom.nlocal;
 
-    // Pack: tag type x(3) v(3) omega(3) d rho
-    constexpr int nValues = 13;
-    std::vector<double> send(nValues*nLocal);
+    owned.resize(nLocal);
     for (int i = 0; i < nLocal; ++i)
     {
-        double* s = &send[nValues*i];
         const double r = atom.radius[i];
-        s[0] = atom.tag[i];
-        s[1] = atom.type[i];
+        owned.tag[i] = atom.tag[i];
+        owned.type[i] = atom.type[i];
         // LIGGGHTS maps atoms back into a periodic box only when it
         // rebuilds its neighbour lists: between rebuilds a position may lie
         // up to half the skin beyond a periodic face. Wrapped here (periodic
         // directions only; the fluid mesh has the matching cyclic patches)
         double x[3] = {atom.x[i][0], atom.x[i][1], atom.x[i][2]};
         lmp_->domain->remap(x);
-        for (int k = 0; k < 3; ++k)
-        {
-            s[2 + k] = x[k];
-            s[5 + k] = atom.v[i][k];
-            s[8 + k] = atom.omega ? atom.omega[i][k] : 0.0;
-        }
-        s[11] = 2*r;
-        s[12] = atom.rmass[i]/(4.0/3.0*pi*r*r*r);
+        owned.position[i] = vector(x[0], x[1], x[2]);
+        owned.velocity[i] = vector(atom.v[i][0], atom.v[i][1], atom.v[i][2]);
+        owned.omega[i] =
+            atom.omega
+          ? vector(atom.omega[i][0], atom.omega[i][1], atom.omega[i][2])
+          : vector::zero;
+        owned.diameter[i] = 2*r;
+        owned.density[i] = atom.rmass[i]/(4.0/3.0*pi*r*r*r);
+        owned.cell[i] = -1;
+        owned.hostProc[i] = -1;
     }
-
-    const MPI_Comm comm = solverComm();
-    int nRanks = 1;
-    MPI_Comm_size(comm, &nRanks);
-
-    counts_.setSize(nRanks);
-    offsets_.setSize(nRanks);
-    int n = nLocal;
-    MPI_Allgather(&n, 1, MPI_INT, counts_.data(), 1, MPI_INT, comm);
-
-    int total = 0;
-    List<int> valueCounts(nRanks), valueOffsets(nRanks);
-    forAll(counts_, r)
-    {
-        offsets_[r] = total;
-        valueCounts[r] = nValues*counts_[r];
-        valueOffsets[r] = nValues*total;
-        total += counts_[r];
-    }
-
-    std::vector<double> all(nValues*total);
-    MPI_Allgatherv
-    (
-        send.data(), nValues*nLocal, MPI_DOUBLE,
-        all.data(), valueCounts.data(), valueOffsets.data(), MPI_DOUBLE,
-        comm
-    );
-
-    particles.resize(total);
-    for (int i = 0; i < total; ++i)
-    {
-        const double* s = &all[nValues*i];
-        particles.tag[i] = label(s[0]);
-        particles.type[i] = label(s[1]);
-        particles.position[i] = vector(s[2], s[3], s[4]);
-        particles.velocity[i] = vector(s[5], s[6], s[7]);
-        particles.omega[i] = vector(s[8], s[9], s[10]);
-        particles.diameter[i] = s[11];
-        particles.density[i] = s[12];
-    }
+    owned.exchange = nullptr;
+    nOwned_ = nLocal;
 }
 
 
@@ -670,50 +630,29 @@ void Foam::demCoupling::demEngine::setForces
     const List<vector>& torque
 )
 {
-    const MPI_Comm comm = solverComm();
-    const label total = force.size();
-
-    // Sum over ranks: each particle is hosted (has its force) on one rank
-    std::vector<double> local(6*total, 0.0), summed(6*total, 0.0);
-    for (label i = 0; i < total; ++i)
+    // This rank's atoms are those of the last ownedParticles(), same order
+    const int nLocal = lmp_->atom->nlocal;
+    if (nLocal != nOwned_ || force.size() != nOwned_)
     {
-        for (int k = 0; k < 3; ++k)
-        {
-            local[6*i + k] = force[i][k];
-            local[6*i + 3 + k] = torque.size() ? torque[i][k] : 0.0;
-        }
+        FatalErrorInFunction
+            << "LIGGGHTS changed its local particles between the particle"
+            << " exchange and setForces (" << nOwned_ << " -> " << nLocal
+            << ", " << force.size() << " forces)" << abort(FatalError);
     }
-    MPI_Allreduce
-    (
-        local.data(), summed.data(), int(6*total), MPI_DOUBLE, MPI_SUM, comm
-    );
-
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
 
     LAMMPS_NS::Fix* dragFix = lmp_->modify->find_fix_id(dragForceFixId);
     LAMMPS_NS::Fix* torqueFix = lmp_->modify->find_fix_id(torqueFixId);
     double** drag = dragFix->array_atom;
     double** hdTorque = torqueFix ? torqueFix->array_atom : nullptr;
 
-    // This rank's atoms are those it packed in the last gather, same order
-    const int nLocal = lmp_->atom->nlocal;
-    if (nLocal != counts_[rank])
-    {
-        FatalErrorInFunction
-            << "LIGGGHTS changed its local particles between gather and"
-            << " setForces (" << counts_[rank] << " -> " << nLocal << ")"
-            << abort(FatalError);
-    }
     for (int i = 0; i < nLocal; ++i)
     {
-        const double* s = &summed[6*(offsets_[rank] + i)];
         for (int k = 0; k < 3; ++k)
         {
-            drag[i][k] = s[k];
+            drag[i][k] = force[i][k];
             if (hdTorque)
             {
-                hdTorque[i][k] = s[3 + k];
+                hdTorque[i][k] = torque.size() ? torque[i][k] : 0.0;
             }
         }
     }

@@ -9,6 +9,7 @@ Foam::demCoupling::particleLocator::particleLocator(const fvMesh& mesh)
     mesh_(mesh),
     bounds_(mesh.points(), false),
     lastCell_(),
+    lostTags_(),
     lost_(0),
     hintHits_(0)
 {
@@ -85,35 +86,35 @@ void Foam::demCoupling::particleLocator::locate(particleData& particles)
         }
     }
 
-    // One host per particle: the lowest rank that found it
+    // One host per particle: the lowest rank that found it. Ranks that
+    // hold it without finding it offer nProcs + rank, so a particle no rank
+    // finds comes out >= nProcs, and the lowest of its holders (the result
+    // less nProcs) counts it: once, whichever exchange
     const label nProcs = Pstream::nProcs();
-    labelList host(n, nProcs);
+    const label me = Pstream::myProcNo();
+    labelList host(n);
     forAll(host, i)
     {
-        if (particles.cell[i] >= 0)
-        {
-            host[i] = Pstream::myProcNo();
-        }
+        host[i] = particles.cell[i] >= 0 ? me : nProcs + me;
     }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(host, minEqOp<label>());
-        Pstream::listCombineScatter(host);
-    }
+    particles.combine(host, combineOp::min);
 
-    lost_ = 0;
+    DynamicList<label> lostTags;
     forAll(host, i)
     {
-        if (host[i] == nProcs)
+        if (host[i] >= nProcs)
         {
-            ++lost_;
             particles.hostProc[i] = -1;
+            if (host[i] - nProcs == me)
+            {
+                lostTags.append(particles.tag[i]);
+            }
         }
         else
         {
             particles.hostProc[i] = host[i];
         }
-        if (host[i] != Pstream::myProcNo())
+        if (host[i] != me)
         {
             particles.cell[i] = -1;
         }
@@ -122,6 +123,8 @@ void Foam::demCoupling::particleLocator::locate(particleData& particles)
             nextCell.insert(particles.tag[i], particles.cell[i]);
         }
     }
+    lostTags_.transfer(lostTags);
+    lost_ = returnReduce(lostTags_.size(), sumOp<label>());
     lastCell_.transfer(nextCell);
 }
 

@@ -123,7 +123,7 @@ void checkKeywords(const Foam::dictionary& dict)
     wordList known
     ({
         "demScript", "demRestartScript", "voidFraction", "minVoidFraction",
-        "forces", "momentumCoupling", "outsideParticles"
+        "forces", "momentumCoupling", "outsideParticles", "exchange"
     });
     for (const word& m : voidFractionModel::dictionaryConstructorTablePtr_->sortedToc())
     {
@@ -181,6 +181,7 @@ Foam::demCoupling::particleCloud::particleCloud
     mixture_(mixture),
     couplingDict_(readCouplingDict(mesh)),
     engine_(),
+    exchange_(),
     locator_(),
     voidFraction_(),
     forces_(),
@@ -218,6 +219,7 @@ Foam::demCoupling::particleCloud::particleCloud
             IOobject::NO_WRITE
         )
     ),
+    owned_(),
     particles_(),
     fluidForce_(),
     K_(),
@@ -232,6 +234,11 @@ Foam::demCoupling::particleCloud::particleCloud
     clock_(),
     demTime_(0),
     couplingTime_(0),
+    locateTime_(0),
+    voidFractionTime_(0),
+    forcesTime_(0),
+    particleSteps_(0),
+    exchangeStart_(0),
     startTime_(clock_.elapsedTime()),
     lastProgress_(startTime_)
 {
@@ -267,6 +274,7 @@ Foam::demCoupling::particleCloud::particleCloud
     voidFraction_ = voidFractionModel::New(dict, mesh);
     forces_ = forceModel::NewList(dict);
     momentumCoupling_ = momentumCouplingModel::New(dict, mesh);
+    exchange_ = particleExchange::New(dict, mesh);
     locator_.reset(new particleLocator(mesh));
 
     engine_.reset(new demEngine(dict, mesh.time()));
@@ -298,7 +306,12 @@ Foam::demCoupling::particleCloud::particleCloud
     // The particles' volume from the start, so that time 0 sees it
     updateParticles();
     voidfraction_.oldTime() = voidfraction_;
-    lastDemCount_ = particles_.size();
+    lastDemCount_ = exchange_->nTotal();
+
+    // The coupling split counts the coupling steps only
+    locateTime_ = 0;
+    voidFractionTime_ = 0;
+    exchangeStart_ = exchange_->seconds();
 }
 
 
@@ -306,20 +319,21 @@ Foam::demCoupling::particleCloud::particleCloud
 
 void Foam::demCoupling::particleCloud::updateParticles()
 {
-    engine_->gather(particles_);
+    engine_->ownedParticles(owned_);
 
-    forAll(particles_.position, i)
+    // Each particle checked once, by the rank that owns it
+    forAll(owned_.position, i)
     {
         if
         (
-            !std::isfinite(magSqr(particles_.position[i]))
-         || !std::isfinite(magSqr(particles_.velocity[i]))
+            !std::isfinite(magSqr(owned_.position[i]))
+         || !std::isfinite(magSqr(owned_.velocity[i]))
         )
         {
             FatalErrorInFunction
-                << "DEM particle " << particles_.tag[i] << " has a non-finite"
-                << " position " << particles_.position[i] << " or velocity "
-                << particles_.velocity[i] << " at t = "
+                << "DEM particle " << owned_.tag[i] << " has a non-finite"
+                << " position " << owned_.position[i] << " or velocity "
+                << owned_.velocity[i] << " at t = "
                 << mesh_.time().timeName() << " s: the DEM blew up." << nl
                 << "    Check the DEM time step against the Rayleigh time"
                 << " printed at the start, and the overlaps of the initial"
@@ -328,8 +342,18 @@ void Foam::demCoupling::particleCloud::updateParticles()
         }
     }
 
+    exchange_->distribute(owned_, voidFraction_->reachFactor(), particles_);
+
+    scalar t0 = clock_.elapsedTime();
+    scalar x0 = exchange_->seconds();
     locator_->locate(particles_);
+    scalar t1 = clock_.elapsedTime();
+    scalar x1 = exchange_->seconds();
+    locateTime_ += (t1 - t0) - (x1 - x0);
+
     voidFraction_->update(particles_, voidfraction_);
+    voidFractionTime_ +=
+        (clock_.elapsedTime() - t1) - (exchange_->seconds() - x1);
 }
 
 
@@ -426,11 +450,7 @@ void Foam::demCoupling::particleCloud::computeForces()
             }
         }
     }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(sums, plusEqOp<scalar>());
-        Pstream::listCombineScatter(sums);
-    }
+    particles_.combine(sums, nq, combineOp::sum);
 
     // Forces: every processor that holds cells of a particle computes the
     // same force from the same (reduced) fluid state
@@ -599,13 +619,15 @@ void Foam::demCoupling::particleCloud::evolve()
     deletedNow_ = 0;
     if (outsidePolicy_ == "delete" && locator_->lost())
     {
+        // Each lost particle is counted by one rank: all ranks' lists
+        List<labelList> perRank(Pstream::nProcs());
+        perRank[Pstream::myProcNo()] = locator_->lostTags();
+        Pstream::gatherList(perRank);
+        Pstream::scatterList(perRank);
         DynamicList<label> tags;
-        forAll(particles_.hostProc, i)
+        for (const labelList& l : perRank)
         {
-            if (particles_.hostProc[i] < 0)
-            {
-                tags.append(particles_.tag[i]);
-            }
+            tags.append(l);
         }
         engine_->deleteParticles(tags);
         deletedNow_ = tags.size();
@@ -634,9 +656,13 @@ void Foam::demCoupling::particleCloud::evolve()
     reduce(cellsPerStep_, maxOp<scalar>());
 
     // 5-6. fluid at the particles, forces, fluid sources
+    const scalar tf = clock_.elapsedTime();
+    const scalar xf = exchange_->seconds();
     computeForces();
+    forcesTime_ += (clock_.elapsedTime() - tf) - (exchange_->seconds() - xf);
 
-    // 7. forces back to the DEM (summed over processors: the host's only)
+    // 7. forces back to the DEM rank that owns each particle (summed over
+    //    the ranks that hold it: the host's only)
     List<vector> hostForce(fluidForce_);
     forAll(hostForce, i)
     {
@@ -645,9 +671,10 @@ void Foam::demCoupling::particleCloud::evolve()
             hostForce[i] = Zero;
         }
     }
-    engine_->setForces(hostForce, List<vector>());
+    engine_->setForces(exchange_->toOwners(hostForce), List<vector>());
 
     couplingTime_ += clock_.elapsedTime() - t1;
+    particleSteps_ += exchange_->nTotal();
 }
 
 
@@ -664,18 +691,19 @@ void Foam::demCoupling::particleCloud::report()
         }
         reduce(hosted, sumOp<label>());
 
-        Info<< "Particles: " << particles_.size() << " in the DEM, "
+        const label nDem = exchange_->nTotal();
+        Info<< "Particles: " << nDem << " in the DEM, "
             << hosted << " in the mesh, " << demSteps_ << " DEM steps,"
             << " min(voidfraction) " << gMin(voidfraction_) << endl;
 
-        if (particles_.size() < lastDemCount_)
+        if (nDem < lastDemCount_)
         {
-            Info<< "Warning: " << lastDemCount_ - particles_.size()
+            Info<< "Warning: " << lastDemCount_ - nDem
                 << " particle(s) left the DEM domain at t = "
                 << runTime.timeName() << " s (LIGGGHTS dropped them); "
-                << particles_.size() << " remain" << endl;
+                << nDem << " remain" << endl;
         }
-        lastDemCount_ = particles_.size();
+        lastDemCount_ = nDem;
 
         if (deletedNow_)
         {
@@ -832,6 +860,25 @@ void Foam::demCoupling::particleCloud::printTimingSplit() const
 
     Info<< "Timing split: DEM " << demTime_ << " s, CFD " << cfd
         << " s, coupling " << couplingTime_ << " s" << endl;
+
+    if (active())
+    {
+        Info<< "Coupling split: exchange "
+            << exchange_->seconds() - exchangeStart_
+            << " s, locate " << locateTime_ << " s, void fraction "
+            << voidFractionTime_ << " s, forces " << forcesTime_ << " s ("
+            << particleSteps_ << " particle steps, "
+            << 1e6*couplingTime_/max(particleSteps_, scalar(1))
+            << " us per particle per coupling step)" << endl;
+        if (Pstream::parRun())
+        {
+            const label held = particles_.size();
+            Info<< "Particles held per rank at the end: min "
+                << returnReduce(held, minOp<label>()) << ", max "
+                << returnReduce(held, maxOp<label>()) << " (of "
+                << exchange_->nTotal() << " in the DEM)" << endl;
+        }
+    }
 }
 
 

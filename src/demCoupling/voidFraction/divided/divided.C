@@ -130,7 +130,7 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
     }
 
     // A point outside every processor's mesh (beyond a wall) is left out
-    normaliseWeights();
+    normaliseWeights(particles);
 }
 
 

@@ -78,11 +78,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
             spread[i] = 1;
         }
     }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(spread, maxEqOp<label>());
-        Pstream::listCombineScatter(spread);
-    }
+    particles.combine(spread, combineOp::max);
 
     boundBox localBounds(mesh_.points(), false);
     nSpread_ = 0;
@@ -150,7 +146,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
     reduce(nSpread_, maxOp<label>());
 
     // Weights V_c / V_VS, V_VS summed over processors
-    normaliseWeights();
+    normaliseWeights(particles);
 }
 
 

@@ -61,18 +61,17 @@ Foam::demCoupling::voidFractionModel::New
 }
 
 
-void Foam::demCoupling::voidFractionModel::normaliseWeights()
+void Foam::demCoupling::voidFractionModel::normaliseWeights
+(
+    const particleData& particles
+)
 {
     scalarList total(weights_.size(), Zero);
     forAll(weights_, i)
     {
         for (const scalar w : weights_[i]) { total[i] += w; }
     }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(total, plusEqOp<scalar>());
-        Pstream::listCombineScatter(total);
-    }
+    particles.combine(total, 1, combineOp::sum);
     forAll(weights_, i)
     {
         if (total[i] > 0)

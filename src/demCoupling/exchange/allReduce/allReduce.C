@@ -1,0 +1,152 @@
+#include "allReduce.H"
+#include "addToRunTimeSelectionTable.H"
+#include "Pstream.H"
+#include <mpi.h>
+
+namespace Foam
+{
+namespace demCoupling
+{
+namespace particleExchanges
+{
+    defineTypeNameAndDebug(allReduce, 0);
+    addToRunTimeSelectionTable(particleExchange, allReduce, dictionary);
+}
+}
+}
+
+
+namespace
+{
+    MPI_Op mpiOp(const Foam::demCoupling::combineOp op)
+    {
+        using Foam::demCoupling::combineOp;
+        return op == combineOp::sum ? MPI_SUM
+             : op == combineOp::min ? MPI_MIN
+             : MPI_MAX;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::particleExchanges::allReduce::allReduce
+(
+    const dictionary&,
+    const fvMesh&
+)
+:
+    particleExchange(),
+    counts_(),
+    offsets_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::demCoupling::particleExchanges::allReduce::distribute
+(
+    const particleData& owned,
+    const scalar,
+    particleData& particles
+)
+{
+    timer t(*this);
+
+    if (!Pstream::parRun())
+    {
+        copyOwned(owned, particles);
+        counts_ = List<int>(1, owned.size());
+        offsets_ = List<int>(1, 0);
+        return;
+    }
+
+    const int nRanks = Pstream::nProcs();
+    const int nOwned = owned.size();
+    counts_.setSize(nRanks);
+    offsets_.setSize(nRanks);
+    MPI_Allgather
+    (
+        &nOwned, 1, MPI_INT, counts_.data(), 1, MPI_INT, MPI_COMM_WORLD
+    );
+
+    int total = 0;
+    List<int> valueCounts(nRanks), valueOffsets(nRanks);
+    forAll(counts_, r)
+    {
+        offsets_[r] = total;
+        valueCounts[r] = nPacked*counts_[r];
+        valueOffsets[r] = nPacked*total;
+        total += counts_[r];
+    }
+
+    std::vector<double> send(nPacked*nOwned), all(nPacked*total);
+    for (int i = 0; i < nOwned; ++i)
+    {
+        pack(owned, i, &send[nPacked*i]);
+    }
+    MPI_Allgatherv
+    (
+        send.data(), nPacked*nOwned, MPI_DOUBLE,
+        all.data(), valueCounts.data(), valueOffsets.data(), MPI_DOUBLE,
+        MPI_COMM_WORLD
+    );
+
+    particles.resize(total);
+    for (int i = 0; i < total; ++i)
+    {
+        unpack(&all[nPacked*i], particles, i);
+    }
+    particles.exchange = this;
+    nTotal_ = total;
+}
+
+
+void Foam::demCoupling::particleExchanges::allReduce::combine
+(
+    scalarList& values,
+    const label,
+    const combineOp op
+) const
+{
+    if (!Pstream::parRun() || values.empty())
+    {
+        return;
+    }
+    timer t(*this);
+    const scalarList mine(values);
+    MPI_Allreduce
+    (
+        mine.cdata(), values.data(), int(values.size()), MPI_DOUBLE,
+        mpiOp(op), MPI_COMM_WORLD
+    );
+}
+
+
+Foam::scalarList Foam::demCoupling::particleExchanges::allReduce::toOwners
+(
+    const scalarList& values,
+    const label width
+) const
+{
+    if (!Pstream::parRun())
+    {
+        return values;
+    }
+    timer t(*this);
+
+    scalarList summed(values.size());
+    MPI_Allreduce
+    (
+        values.cdata(), summed.data(), int(values.size()), MPI_DOUBLE,
+        MPI_SUM, MPI_COMM_WORLD
+    );
+    const label me = Pstream::myProcNo();
+    return scalarList
+    (
+        SubList<scalar>(summed, width*counts_[me], width*offsets_[me])
+    );
+}
+
+
+// ************************************************************************* //

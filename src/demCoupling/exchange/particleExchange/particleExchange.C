@@ -1,0 +1,147 @@
+#include "particleExchange.H"
+#include "Pstream.H"
+
+namespace Foam
+{
+namespace demCoupling
+{
+    defineTypeNameAndDebug(particleExchange, 0);
+    defineRunTimeSelectionTable(particleExchange, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::particleExchange::particleExchange()
+:
+    nTotal_(0),
+    seconds_(0),
+    clock_()
+{}
+
+
+// * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::demCoupling::particleExchange>
+Foam::demCoupling::particleExchange::New
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+{
+    const word exchangeType
+    (
+        dict.getOrDefault<word>("exchange", "manyToMany")
+    );
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(exchangeType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "exchange",
+            exchangeType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    if (Pstream::parRun())
+    {
+        Info<< "Particle exchange between ranks: " << exchangeType << endl;
+    }
+
+    return autoPtr<particleExchange>(cstrIter()(dict, mesh));
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::demCoupling::particleExchange::identity
+(
+    const combineOp op
+)
+{
+    return op == combineOp::sum ? 0
+         : op == combineOp::min ? GREAT
+         : -GREAT;
+}
+
+
+void Foam::demCoupling::particleExchange::pack
+(
+    const particleData& p,
+    const label i,
+    double* s
+)
+{
+    s[0] = p.tag[i];
+    s[1] = p.type[i];
+    for (direction k = 0; k < 3; ++k)
+    {
+        s[2 + k] = p.position[i][k];
+        s[5 + k] = p.velocity[i][k];
+        s[8 + k] = p.omega[i][k];
+    }
+    s[11] = p.diameter[i];
+    s[12] = p.density[i];
+}
+
+
+void Foam::demCoupling::particleExchange::unpack
+(
+    const double* s,
+    particleData& p,
+    const label i
+)
+{
+    p.tag[i] = label(s[0]);
+    p.type[i] = label(s[1]);
+    p.position[i] = vector(s[2], s[3], s[4]);
+    p.velocity[i] = vector(s[5], s[6], s[7]);
+    p.omega[i] = vector(s[8], s[9], s[10]);
+    p.diameter[i] = s[11];
+    p.density[i] = s[12];
+    p.cell[i] = -1;
+    p.hostProc[i] = -1;
+}
+
+
+void Foam::demCoupling::particleExchange::copyOwned
+(
+    const particleData& owned,
+    particleData& particles
+)
+{
+    particles = owned;
+    particles.exchange = this;
+    nTotal_ = owned.size();
+}
+
+
+Foam::List<Foam::vector> Foam::demCoupling::particleExchange::toOwners
+(
+    const List<vector>& values
+) const
+{
+    scalarList flat(3*values.size());
+    forAll(values, i)
+    {
+        for (direction k = 0; k < 3; ++k)
+        {
+            flat[3*i + k] = values[i][k];
+        }
+    }
+    const scalarList owned(toOwners(flat, 3));
+    List<vector> result(owned.size()/3);
+    forAll(result, i)
+    {
+        result[i] = vector(owned[3*i], owned[3*i + 1], owned[3*i + 2]);
+    }
+    return result;
+}
+
+
+// ************************************************************************* //

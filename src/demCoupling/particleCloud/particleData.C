@@ -1,0 +1,65 @@
+#include "particleData.H"
+#include "particleExchange.H"
+#include "Pstream.H"
+#include "ops.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::demCoupling::particleData::combine
+(
+    scalarList& values,
+    const label width,
+    const combineOp op
+) const
+{
+    if (exchange)
+    {
+        exchange->combine(values, width, op);
+        return;
+    }
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    // Filled by hand: every rank holds the same whole list
+    switch (op)
+    {
+        case combineOp::sum:
+            Pstream::listCombineGather(values, plusEqOp<scalar>());
+            break;
+        case combineOp::min:
+            Pstream::listCombineGather(values, minEqOp<scalar>());
+            break;
+        case combineOp::max:
+            Pstream::listCombineGather(values, maxEqOp<scalar>());
+            break;
+    }
+    Pstream::listCombineScatter(values);
+}
+
+
+void Foam::demCoupling::particleData::combine
+(
+    labelList& values,
+    const combineOp op
+) const
+{
+    if (!exchange && !Pstream::parRun())
+    {
+        return;
+    }
+    // Labels travel as doubles: exact up to 2^53
+    scalarList v(values.size());
+    forAll(values, i)
+    {
+        v[i] = values[i];
+    }
+    combine(v, 1, op);
+    forAll(values, i)
+    {
+        values[i] = label(v[i]);
+    }
+}
+
+
+// ************************************************************************* //
