@@ -3,9 +3,9 @@
 
     plotScaling.py results.dat OUTDIR
 
-sizes.png : timing split DEM / CFD / coupling against the particle count,
+sizes-<scene>.png : timing split DEM / CFD / coupling against the particle count,
             and the coupling cost per particle per coupling step (its parts)
-strong.png: speed-up and parallel efficiency (whole run and coupling) of
+strong-<scene>.png: speed-up and parallel efficiency (whole run and coupling) of
             each exchange against the rank count, particles held per rank
 Prints the tables it draws. Rows repeated for the same configuration: the
 last one counts.
@@ -16,7 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-cols = ("mode N cells ranks exchange steps total DEM CFD coupling exchange "
+cols = ("mode N cells ranks exchange steps total DEM CFD coupling exchangeTime "
         "locate voidFraction forces usPerParticleStep heldMin heldMax").split()
 
 
@@ -34,10 +34,11 @@ def read(path):
     return list(rows.values())
 
 
-def sizes(rows, out):
-    rows = sorted([r for r in rows if r["mode"] == "sizes"], key=lambda r: r["N"])
+def sizes(rows, out, mode):
+    rows = sorted([r for r in rows if r["mode"] == mode], key=lambda r: r["N"])
     if not rows:
         return
+    print("== %s" % mode)
     print("# particles cells  total[s]  DEM[s]  CFD[s]  coupling[s] (share)  "
           "us/particle/step: coupling exchange locate voidFraction forces")
     for r in rows:
@@ -45,7 +46,7 @@ def sizes(rows, out):
         print("%9d %7d %8.2f %7.2f %7.2f %7.2f (%4.1f %%)   %6.3f %6.3f %6.3f %6.3f %6.3f" % (
             r["N"], r["cells"], r["total"], r["DEM"], r["CFD"], r["coupling"],
             100*r["coupling"]/r["total"], 1e6*r["coupling"]/ps,
-            1e6*r["exchange"]/ps, 1e6*r["locate"]/ps,
+            1e6*r["exchangeTime"]/ps, 1e6*r["locate"]/ps,
             1e6*r["voidFraction"]/ps, 1e6*r["forces"]/ps))
     big = [r for r in rows if r["N"] >= 1e4]
     if big:
@@ -65,12 +66,12 @@ def sizes(rows, out):
                  label="linear in N")
     ax[0].set_xlabel("particles")
     ax[0].set_ylabel("wall time [s] (%d coupling steps)" % rows[0]["steps"])
-    ax[0].set_title("Timing split, serial")
+    ax[0].set_title("Timing split, serial (%s)" % mode[6:])
     ax[0].grid(True, which="both", alpha=0.3)
     ax[0].legend()
     for key, style in (("coupling", "r-D"), ("locate", "c-o"),
                        ("voidFraction", "m-s"), ("forces", "y-^"),
-                       ("exchange", "k-v")):
+                       ("exchangeTime", "k-v")):
         ax[1].semilogx(N, [1e6*r[key]/(r["N"]*r["steps"]) for r in rows],
                        style, label=key)
     ax[1].set_xlabel("particles")
@@ -81,13 +82,14 @@ def sizes(rows, out):
     ax[1].grid(True, which="both", alpha=0.3)
     ax[1].legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "sizes.png"), dpi=110)
+    fig.savefig(os.path.join(out, mode + ".png"), dpi=110)
 
 
-def strong(rows, out):
-    rows = [r for r in rows if r["mode"] == "strong"]
+def strong(rows, out, mode):
+    rows = [r for r in rows if r["mode"] == mode]
     if not rows:
         return
+    print("== %s" % mode)
     fig, ax = plt.subplots(1, 3, figsize=(14, 4.2))
     print("# exchange ranks particles total[s] coupling[s] speed-up(total) "
           "efficiency(total) efficiency(coupling) held/rank(max)")
@@ -122,11 +124,14 @@ def strong(rows, out):
         a.grid(True, alpha=0.3)
         a.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "strong.png"), dpi=110)
+    fig.savefig(os.path.join(out, mode + ".png"), dpi=110)
 
 
 if __name__ == "__main__":
     rows = read(sys.argv[1])
     out = sys.argv[2] if len(sys.argv) > 2 else "."
-    sizes(rows, out)
-    strong(rows, out)
+    for mode in sorted(set(r["mode"] for r in rows)):
+        if mode.startswith("sizes"):
+            sizes(rows, out, mode)
+        elif mode.startswith("strong"):
+            strong(rows, out, mode)

@@ -11,9 +11,37 @@ Foam::demCoupling::particleLocator::particleLocator(const fvMesh& mesh)
     lastCell_(),
     lostTags_(),
     lost_(0),
-    hintHits_(0)
+    hintHits_(0),
+    planarConvex_(mesh.nCells(), false)
 {
     bounds_.inflate(1e-6);
+
+    // Cells with planar faces and no point outside any face's plane: for
+    // them "inside every face plane" is the same test as the tet one
+    const vectorField& Sf = mesh.faceAreas();
+    const vectorField& Cf = mesh.faceCentres();
+    const pointField& pts = mesh.points();
+    const labelListList& cellPoints = mesh.cellPoints();
+    forAll(planarConvex_, c)
+    {
+        bool ok = true;
+        for (const label f : mesh.cells()[c])
+        {
+            const scalar magS = mag(Sf[f]);
+            const vector n((mesh.faceOwner()[f] == c ? 1 : -1)*Sf[f]/magS);
+            const scalar tol = 1e-9*Foam::sqrt(magS);
+            for (const label p : mesh.faces()[f])
+            {
+                ok = ok && mag((pts[p] - Cf[f]) & n) <= tol;
+            }
+            for (const label p : cellPoints[c])
+            {
+                ok = ok && ((pts[p] - Cf[f]) & n) <= tol;
+            }
+            if (!ok) break;
+        }
+        planarConvex_[c] = ok;
+    }
 
     // The tet decomposition is built with a parallel synchronisation: build
     // it (and the cell octree) now, on every processor, not lazily on those
@@ -35,7 +63,46 @@ Foam::label Foam::demCoupling::particleLocator::findCell
     {
         return -1;
     }
-    return findCellNear(mesh_, p, hint);
+    if (hint >= 0 && hint < mesh_.nCells())
+    {
+        if (inCell(p, hint))
+        {
+            return hint;
+        }
+        for (const label nbr : mesh_.cellCells()[hint])
+        {
+            if (inCell(p, nbr))
+            {
+                return nbr;
+            }
+        }
+    }
+    return mesh_.findCell(p, polyMesh::CELL_TETS);
+}
+
+
+bool Foam::demCoupling::particleLocator::inCell
+(
+    const point& p,
+    const label c
+) const
+{
+    if (!planarConvex_[c])
+    {
+        return mesh_.pointInCell(p, c, polyMesh::CELL_TETS);
+    }
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const labelList& owner = mesh_.faceOwner();
+    for (const label f : mesh_.cells()[c])
+    {
+        const scalar d = (p - Cf[f]) & Sf[f];
+        if (owner[f] == c ? d > 0 : d < 0)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 

@@ -126,6 +126,10 @@ Foam::List<Foam::vector> Foam::demCoupling::particleExchange::toOwners
     const List<vector>& values
 ) const
 {
+    if (!Pstream::parRun())
+    {
+        return values;
+    }
     scalarList flat(3*values.size());
     forAll(values, i)
     {

@@ -1,7 +1,5 @@
 #include "virtualSphere.H"
 #include "addToRunTimeSelectionTable.H"
-#include "treeDataCell.H"
-#include "indexedOctree.H"
 
 namespace Foam
 {
@@ -43,19 +41,58 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
         )
     ),
     nSpread_(0),
-    centres_(mesh.C().primitiveField()),
-    centreTree_()
+    binOrigin_(Zero),
+    binSize_(1),
+    binStart_(),
+    binCells_(),
+    sphereCells_()
 {
     Info<< "    virtual sphere: diameter " << diameterRatio_ << " d for"
         << " particles with d > " << sizeThreshold_ << " dx" << endl;
 
-    treeBoundBox bb(centres_);
-    bb.min() -= vector::uniform(1e-6*mag(bb.span()) + VSMALL);
-    bb.max() += vector::uniform(1e-6*mag(bb.span()) + VSMALL);
-    centreTree_.reset
-    (
-        new indexedOctree<treeDataPoint>(treeDataPoint(centres_), bb, 8, 10, 3.0)
-    );
+    // Bins of the cell centres: a uniform grid over the mesh's bounds
+    // with about one centre per bin (a sphere query visits the few bins
+    // its box overlaps; no tree walk, no allocation)
+    const pointField& C = mesh.C().primitiveField();
+    const label nCells = C.size();
+    boundBox bb(mesh.points(), false);
+    if (nCells == 0 || bb.empty())
+    {
+        bb = boundBox(point::zero, point::one);
+    }
+    binOrigin_ = bb.min();
+    const vector span(max(bb.span(), vector::uniform(VSMALL)));
+    scalar h = cbrt(cmptProduct(span)/max(nCells, label(1)));
+    for (direction k = 0; k < 3; ++k)
+    {
+        h = min(max(h, span[k]/1000), GREAT);
+    }
+    binSize_ = h;
+    label nTotal = 1;
+    for (direction k = 0; k < 3; ++k)
+    {
+        nBins_[k] = max(label(1), label(std::ceil(span[k]/h)));
+        nTotal *= nBins_[k];
+    }
+    binStart_.setSize(nTotal + 1, Zero);
+    labelList binOfCell(nCells);
+    forAll(C, c)
+    {
+        binOfCell[c] =
+            binOf(C[c].x(), 0)
+          + nBins_[0]*(binOf(C[c].y(), 1) + nBins_[1]*binOf(C[c].z(), 2));
+        ++binStart_[binOfCell[c] + 1];
+    }
+    for (label b = 0; b < nTotal; ++b)
+    {
+        binStart_[b + 1] += binStart_[b];
+    }
+    binCells_.setSize(nCells);
+    labelList fill(SubList<label>(binStart_, nTotal));
+    forAll(C, c)
+    {
+        binCells_[fill[binOfCell[c]]++] = c;
+    }
 }
 
 
@@ -67,6 +104,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
     const label n = particles.size();
     const scalarField& V = mesh_.V();
     const volVectorField& C = mesh_.C();
+    DynamicList<label>& cells = sphereCells_;
 
     // The host decides whether a particle is spread; all processors learn it
     labelList spread(n, Zero);
@@ -118,31 +156,49 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
             continue;
         }
 
-        // Cells whose centre is inside the sphere (the octree's candidates,
-        // from a slightly larger sphere, filtered exactly); the host always
-        const labelList candidates
-        (
-            centreTree_->findSphere(x0, sqr(R)*(1 + 1e-9))
-        );
-        DynamicList<label> cells(candidates.size() + 1);
-        DynamicList<scalar> w(candidates.size() + 1);
-        for (const label c : candidates)
+        // Cells whose centre is inside the sphere (bins of cell centres
+        // that the sphere's box overlaps, filtered exactly); the host always
+        cells.clear();
+        bool haveHost = false;
+        const scalar R2 = sqr(R);
+        label lo[3], hi[3];
+        for (direction k = 0; k < 3; ++k)
         {
-            if (c == host || magSqr(C[c] - x0) <= sqr(R))
+            lo[k] = binOf(x0[k] - R, k);
+            hi[k] = binOf(x0[k] + R, k);
+        }
+        for (label bz = lo[2]; bz <= hi[2]; ++bz)
+        {
+            for (label by = lo[1]; by <= hi[1]; ++by)
             {
-                cells.append(c);
-                w.append(V[c]);
+                const label row = nBins_[0]*(by + nBins_[1]*bz);
+                for (label bx = lo[0]; bx <= hi[0]; ++bx)
+                {
+                    const label bin = row + bx;
+                    for (label j = binStart_[bin]; j < binStart_[bin + 1]; ++j)
+                    {
+                        const label c = binCells_[j];
+                        if (c == host || magSqr(C[c] - x0) <= R2)
+                        {
+                            cells.append(c);
+                            haveHost = haveHost || c == host;
+                        }
+                    }
+                }
             }
         }
-        if (host >= 0 && !cells.found(host))
+        if (host >= 0 && !haveHost)
         {
             cells.append(host);
-            w.append(V[host]);
         }
-        cells_[i].transfer(cells);
-        weights_[i].transfer(w);
+        cells_[i] = cells;
+        scalarList& w = weights_[i];
+        w.setSize(cells.size());
+        forAll(cells, k)
+        {
+            w[k] = V[cells[k]];
+        }
     }
-
     reduce(nSpread_, maxOp<label>());
 
     // Weights V_c / V_VS, V_VS summed over processors
