@@ -12,6 +12,10 @@ void Foam::demCoupling::particleData::combine
     const combineOp op
 ) const
 {
+    if (!Pstream::parRun())
+    {
+        return;   // one rank holds every particle: nothing to combine
+    }
     if (exchange)
     {
         exchange->combine(values, width, op);
@@ -44,7 +48,7 @@ void Foam::demCoupling::particleData::combine
     const combineOp op
 ) const
 {
-    if (!exchange && !Pstream::parRun())
+    if (!Pstream::parRun())
     {
         return;
     }
