@@ -138,14 +138,40 @@ void Foam::demCoupling::particleLocator::locate(particleData& particles)
     const label n = particles.size();
     hintHits_ = 0;
 
-    Map<label> nextCell(2*n);
+    // The hint list grows to the largest tag held (LIGGGHTS numbers its
+    // atoms from 1 up); a tag far beyond the particle count (a run that
+    // inserts and deletes for long) goes without a hint: found by search
+    label maxTag = -1;
+    for (const label tag : particles.tag)
+    {
+        maxTag = max(maxTag, tag);
+    }
+    const label maxHinted = 4*n + 65536;
+    if (maxTag >= lastCell_.size() && lastCell_.size() <= maxHinted)
+    {
+        const label oldSize = lastCell_.size();
+        lastCell_.setSize(min(max(maxTag + 1, 2*oldSize), maxHinted + 1));
+        SubList<label>(lastCell_, lastCell_.size() - oldSize, oldSize) = -1;
+    }
+    auto hinted = [&](const label tag)
+    {
+        return tag >= 0 && tag < lastCell_.size();
+    };
+
+    // A particle new to this rank starts from the cell of the particle
+    // before it: LIGGGHTS sorts its atoms in space, so that is near (the
+    // first step of a run searched the octree for every particle)
+    label previous = -1;
     forAll(particles.position, i)
     {
-        const label hint = lastCell_.lookup(particles.tag[i], -1);
-        const label c = findCell(particles.position[i], hint);
+        const label tag = particles.tag[i];
+        const label hint = hinted(tag) ? lastCell_[tag] : -1;
+        const label c =
+            findCell(particles.position[i], hint >= 0 ? hint : previous);
         particles.cell[i] = c;
         if (c >= 0)
         {
+            previous = c;
             if (c == hint || (hint >= 0 && mesh_.cellCells()[hint].found(c)))
             {
                 ++hintHits_;
@@ -185,14 +211,13 @@ void Foam::demCoupling::particleLocator::locate(particleData& particles)
         {
             particles.cell[i] = -1;
         }
-        else
+        if (hinted(particles.tag[i]))
         {
-            nextCell.insert(particles.tag[i], particles.cell[i]);
+            lastCell_[particles.tag[i]] = particles.cell[i];
         }
     }
     lostTags_.transfer(lostTags);
     lost_ = returnReduce(lostTags_.size(), sumOp<label>());
-    lastCell_.transfer(nextCell);
 }
 
 

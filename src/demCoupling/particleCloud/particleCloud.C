@@ -652,21 +652,26 @@ void Foam::demCoupling::particleCloud::evolve()
 
     // How many cells a particle crosses per coupling step: above one, the
     // fluid it sees jumps (and so do its forces)
-    cellsPerStep_ = 0;
-    forAll(particles_.cell, i)
+    // (the largest (|u| dt)^3/V_cell, one cube root: a cube root per
+    // particle was a tenth of the coupling time)
     {
-        const label c = particles_.cell[i];
-        if (c >= 0 && particles_.hostProc[i] == Pstream::myProcNo())
+        const scalarField& V = mesh_.V();
+        const scalar dt = runTime.deltaTValue();
+        scalar maxCube = 0;
+        forAll(particles_.cell, i)
         {
-            cellsPerStep_ = max
-            (
-                cellsPerStep_,
-                mag(particles_.velocity[i])*runTime.deltaTValue()
-               /cbrt(mesh_.V()[c])
-            );
+            const label c = particles_.cell[i];
+            if (c >= 0 && particles_.hostProc[i] == Pstream::myProcNo())
+            {
+                maxCube = max
+                (
+                    maxCube,
+                    pow3(mag(particles_.velocity[i])*dt)/V[c]
+                );
+            }
         }
+        cellsPerStep_ = cbrt(returnReduce(maxCube, maxOp<scalar>()));
     }
-    reduce(cellsPerStep_, maxOp<scalar>());
 
     // 5-6. fluid at the particles, forces, fluid sources
     const scalar tf = clock_.elapsedTime();

@@ -299,7 +299,7 @@ TEST(virtualSphereVoidFraction, CellSetStraddlingCellsAndNearAWall)
         (
             bruteForceSphere(mesh, x, 2*0.6*dx, p.cell[0])
         );
-        const labelList& cells = vf->cells(0);
+        const labelUList cells(vf->cells(0));
         EXPECT_EQ(label(cells.size()), expected.size()) << x.x() << " " << x.y();
         scalar VVS = 0;
         for (const label c : cells)

@@ -32,15 +32,9 @@ void Foam::demCoupling::voidFractionModels::centre::distribute
     forAll(particles.cell, i)
     {
         const label c = particles.cell[i];
-        if (c < 0)
+        if (c >= 0)
         {
-            cells_[i].clear();
-            weights_[i].clear();
-        }
-        else
-        {
-            cells_[i] = labelList(1, c);
-            weights_[i] = scalarList(1, 1.0);
+            addCell(i, c, 1.0);
         }
     }
 }

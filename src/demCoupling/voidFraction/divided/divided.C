@@ -67,11 +67,13 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
     boundBox localBounds(mesh_.points(), false);
     localBounds.inflate(1e-6);
 
+    // Points per cell (a particle touches few cells: linear search)
+    DynamicList<label> cells(8);
+    DynamicList<scalar> counts(8);
+
     forAll(particles.position, i)
     {
         const label host = particles.cell[i];
-        cells_[i].clear();
-        weights_[i].clear();
         if (particles.hostProc[i] < 0)
         {
             continue;   // outside the whole mesh: no volume, no force
@@ -91,9 +93,8 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
             continue;
         }
 
-        // Points per cell (a particle touches few cells: linear search)
-        DynamicList<label> cells(8);
-        DynamicList<scalar> counts(8);
+        cells.clear();
+        counts.clear();
         for (const vector& u : unitPoints_)
         {
             const point x(x0 + r*u);
@@ -125,8 +126,10 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
             counts.append(1);
         }
 
-        cells_[i].transfer(cells);
-        weights_[i].transfer(counts);
+        forAll(cells, k)
+        {
+            addCell(i, cells[k], counts[k]);
+        }
     }
 
     // A point outside every processor's mesh (beyond a wall) is left out

@@ -107,11 +107,13 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
     DynamicList<label>& cells = sphereCells_;
 
     // The host decides whether a particle is spread; all processors learn it
+    // (d > c dx with dx = cbrt(V), in cubes: no cube root per particle)
     labelList spread(n, Zero);
+    const scalar threshold3 = pow3(sizeThreshold_);
     forAll(particles.cell, i)
     {
         const label host = particles.cell[i];
-        if (host >= 0 && particles.diameter[i] > sizeThreshold_*cbrt(V[host]))
+        if (host >= 0 && pow3(particles.diameter[i]) > threshold3*V[host])
         {
             spread[i] = 1;
         }
@@ -124,8 +126,6 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
     forAll(particles.position, i)
     {
         const label host = particles.cell[i];
-        cells_[i].clear();
-        weights_[i].clear();
         if (particles.hostProc[i] < 0)
         {
             continue;   // outside the whole mesh: no volume, no force
@@ -135,8 +135,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
         {
             if (host >= 0)
             {
-                cells_[i] = labelList(1, host);
-                weights_[i] = scalarList(1, 1.0);
+                addCell(i, host, 1.0);
             }
             continue;
         }
@@ -191,12 +190,9 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
         {
             cells.append(host);
         }
-        cells_[i] = cells;
-        scalarList& w = weights_[i];
-        w.setSize(cells.size());
-        forAll(cells, k)
+        for (const label c : cells)
         {
-            w[k] = V[cells[k]];
+            addCell(i, c, V[c]);
         }
     }
     reduce(nSpread_, maxOp<label>());

@@ -26,8 +26,10 @@ Foam::demCoupling::voidFractionModel::voidFractionModel
             "> 0 and < 1 (the smallest fluid fraction a cell keeps)"
         )
     ),
-    cells_(),
-    weights_(),
+    cellStart_(1, Zero),
+    cellList_(),
+    weightList_(),
+    lastAdded_(-1),
     floorHits_(0),
     totalFloorHits_(0)
 {}
@@ -66,21 +68,35 @@ void Foam::demCoupling::voidFractionModel::normaliseWeights
     const particleData& particles
 )
 {
-    scalarList total(weights_.size(), Zero);
-    forAll(weights_, i)
+    closeCells();
+    const label n = cellStart_.size() - 1;
+    scalarList total(n, Zero);
+    for (label i = 0; i < n; ++i)
     {
-        for (const scalar w : weights_[i]) { total[i] += w; }
+        for (label k = cellStart_[i]; k < cellStart_[i + 1]; ++k)
+        {
+            total[i] += weightList_[k];
+        }
     }
     particles.combine(total, 1, combineOp::sum);
-    forAll(weights_, i)
+    for (label i = 0; i < n; ++i)
     {
         if (total[i] > 0)
         {
-            for (scalar& w : weights_[i])
+            for (label k = cellStart_[i]; k < cellStart_[i + 1]; ++k)
             {
-                w /= total[i];
+                weightList_[k] /= total[i];
             }
         }
+    }
+}
+
+
+void Foam::demCoupling::voidFractionModel::closeCells()
+{
+    while (lastAdded_ + 1 < cellStart_.size())
+    {
+        cellStart_[++lastAdded_] = cellList_.size();
     }
 }
 
@@ -91,9 +107,13 @@ void Foam::demCoupling::voidFractionModel::update
     volScalarField& eps
 )
 {
-    cells_.setSize(particles.size());
-    weights_.setSize(particles.size());
+    cellStart_.setSize(particles.size() + 1);
+    cellStart_[0] = 0;
+    cellList_.clear();
+    weightList_.clear();
+    lastAdded_ = 0;     // particle 0 starts at 0
     distribute(particles);
+    closeCells();
 
     scalarList Vp(particles.size());
     forAll(Vp, i)
