@@ -15,6 +15,7 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+#include <mpi.h>
 
 namespace
 {
@@ -355,7 +356,13 @@ void Foam::demCoupling::particleCloud::updateParticles()
         }
     }
 
-    exchange_->distribute(owned_, voidFraction_->reachFactor(), particles_);
+    exchange_->distribute
+    (
+        owned_,
+        voidFraction_->reachFactor(),
+        voidFraction_->reachesCellCentres(),
+        particles_
+    );
 
     scalar t0 = clock_.elapsedTime();
     scalar x0 = exchange_->seconds();
@@ -620,9 +627,15 @@ void Foam::demCoupling::particleCloud::evolve()
             << " or change deltaT in system/controlDict." << exit(FatalIOError);
     }
 
-    // 1. DEM advance
+    // 1. DEM advance. In parallel the DEM phase ends when its slowest rank
+    //    is done: the wait for it is DEM time (LIGGGHTS's load balance),
+    //    not time the exchange that follows spends in its collectives
     scalar t0 = clock_.elapsedTime();
     engine_->advance(demSteps_);
+    if (Pstream::parRun())
+    {
+        MPI_Barrier(MPI_COMM_WORLD);
+    }
     scalar t1 = clock_.elapsedTime();
     demTime_ += t1 - t0;
 

@@ -48,6 +48,7 @@ void Foam::demCoupling::particleExchanges::allReduce::distribute
 (
     const particleData& owned,
     const scalar,
+    const bool,
     particleData& particles
 )
 {

@@ -53,6 +53,7 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
 :
     particleExchange(),
     procBounds_(),
+    centreBounds_(),
     sendIndices_(),
     sendCounts_(),
     recvCounts_(),
@@ -63,22 +64,37 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
     {
         return;
     }
+    // Every rank's mesh box and cell-centre box
     boundBox local(mesh.points(), false);
     local.inflate(1e-6);
-    const double mine[6] =
+    boundBox centres(mesh.cellCentres(), false);
+    if (centres.empty())
+    {
+        centres = local;
+    }
+    centres.inflate(1e-6);
+    const double mine[12] =
     {
         local.min().x(), local.min().y(), local.min().z(),
-        local.max().x(), local.max().y(), local.max().z()
+        local.max().x(), local.max().y(), local.max().z(),
+        centres.min().x(), centres.min().y(), centres.min().z(),
+        centres.max().x(), centres.max().y(), centres.max().z()
     };
     const int nRanks = Pstream::nProcs();
-    std::vector<double> all(6*nRanks);
-    MPI_Allgather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, MPI_COMM_WORLD);
+    std::vector<double> all(12*nRanks);
+    MPI_Allgather
+    (
+        mine, 12, MPI_DOUBLE, all.data(), 12, MPI_DOUBLE, MPI_COMM_WORLD
+    );
     procBounds_.setSize(nRanks);
+    centreBounds_.setSize(nRanks);
     forAll(procBounds_, r)
     {
-        const double* b = &all[6*r];
+        const double* b = &all[12*r];
         procBounds_[r] =
             boundBox(point(b[0], b[1], b[2]), point(b[3], b[4], b[5]));
+        centreBounds_[r] =
+            boundBox(point(b[6], b[7], b[8]), point(b[9], b[10], b[11]));
     }
 }
 
@@ -129,6 +145,7 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
 (
     const particleData& owned,
     const scalar reachFactor,
+    const bool toCellCentres,
     particleData& particles
 )
 {
@@ -145,7 +162,10 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
     nOwned_ = owned.size();
 
     // Where each owned particle is needed (a margin over the models' own
-    // overlap tests, so that a rank never misses one it would use)
+    // overlap tests, so that a rank never misses one it would use): where
+    // its centre may lie, and where it reaches the mesh (or the cell
+    // centres: half a cell less on every side of a rank's box)
+    const List<boundBox>& reached = toCellCentres ? centreBounds_ : procBounds_;
     List<DynamicList<label>> dest(nRanks);
     for (label i = 0; i < nOwned_; ++i)
     {
@@ -155,7 +175,7 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
         bool sent = false;
         forAll(procBounds_, r)
         {
-            if (procBounds_[r].overlaps(reach))
+            if (procBounds_[r].contains(x) || reached[r].overlaps(reach))
             {
                 dest[r].append(i);
                 sent = true;
