@@ -76,17 +76,3 @@ set_tests_properties(case.exchangeIdentical PROPERTIES LABELS "case;coupled;para
 # the particles (warm pixels > 2 %); with the cloud removed the check fails
 add_test(case.render "bash" "cases/render.sh")
 set_tests_properties(case.render PROPERTIES LABELS "case;render" TIMEOUT 300 SKIP_RETURN_CODE 77)
-
-# Damaged DEM restart files, serial and on 2 ranks: a truncated file (and
-# the same file read by LIGGGHTS: the output guard), a kill while the file is
-# written, a full disk (tmpfs; skipped without root). Each stops within 30 s
-# with < 10 MB of output and restarts with -restartFromLastComplete.
-add_test(case.restartTruncated "bash" "cases/restartDamaged.sh" "truncated")
-set_tests_properties(case.restartTruncated PROPERTIES LABELS "case;coupled;reliability" TIMEOUT 600)
-
-add_test(case.restartKilled "bash" "cases/restartDamaged.sh" "killed")
-set_tests_properties(case.restartKilled PROPERTIES LABELS "case;coupled;reliability" TIMEOUT 600)
-
-add_test(case.restartDiskFull "bash" "cases/restartDamaged.sh" "diskFull")
-set_tests_properties(case.restartDiskFull PROPERTIES
-    LABELS "case;coupled;reliability" TIMEOUT 600 SKIP_RETURN_CODE 77)
