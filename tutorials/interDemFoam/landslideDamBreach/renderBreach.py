@@ -1,8 +1,11 @@
 #!/usr/bin/env pvbatch
 """Landslide dam breach in pictures (the longitudinal view of seed Fig. 6).
 
-    xvfb-run -a pvbatch renderBreach.py CASE [--noGif] [--grainMax 0.5]
-                                              [--waterMax 1.5]
+    pvrender renderBreach.py CASE [--noGif] [--grainMax 0.5] [--waterMax 1.5]
+                                  [--frames DIR]
+
+(pvrender, in the project's bin/, runs pvbatch on a private virtual X server;
+`xvfb-run -a pvbatch renderBreach.py CASE` works too.)
 
 CASE is a run of this tutorial (e.g. C2.small). Writes, in CASE:
 
@@ -14,19 +17,20 @@ CASE is a run of this tutorial (e.g. C2.small). Writes, in CASE:
 
 The six moments come from the analysis (damBreachAnalysis.py writes
 damBreach.dat and damBreach.summary; run it first):
-  start         the first write time
+  start         the first write time (t = 0 has no cloud: the first after)
   seepage       half-way between the start and the overtopping
   overtopping   the first write time at or after 'overtopping from t'
   backward      half-way between the overtopping and the onset of the crest's
   erosion       lowering (the crest has lost 10 % of what it will lose)
   head-cut      the crest has lost half of what it will lose
-  end           the last write time
+  end           the analysis's end (its last DEM dump with grains), else the
+                last write time
 Without an overtopping (or without the analysis) the six are evenly spaced
 write times, and the panel says so.
 
 Grains come from the Lagrangian cloud 'demParticles' that interDemFoam writes
-at each write time (d, U); where a time has none (t = 0, before the first
-coupling step) from the DEM's own dump post/particles_<step>.vtk.
+at each write time (d, U); where a time has none, from the DEM's own dump
+post/particles_<step>.vtk if there is one.
 The view is the flume's side (looking across it), turned so that up is the
 real world's up (against constant/g): the bed falls 5 degrees downstream.
 """
