@@ -68,7 +68,7 @@ add_test(case.damBreach "bash" "cases/damBreach.sh")
 set_tests_properties(case.damBreach PROPERTIES LABELS "case;coupled;damBreach" TIMEOUT 900)
 
 # allReduce and manyToMany particle exchanges: the same fields, forces and
-# DEM state on 2 ranks, to all digits
+# DEM state on 2 ranks to all digits, on 3 and 4 ranks to 1e-12; held counts
 add_test(case.exchangeIdentical "bash" "cases/exchangeIdentical.sh")
 set_tests_properties(case.exchangeIdentical PROPERTIES LABELS "case;coupled;parallel" TIMEOUT 600)
 
