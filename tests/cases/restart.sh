@@ -3,8 +3,9 @@
 # Restart without loss (the 20 mm settling column of the single-particle
 # benchmark, particle in the water from t = 0.1 s):
 #   1. an uninterrupted run to t = 0.16 s, writing every 0.02 s;
-#   2. the same run killed with SIGKILL once t = 0.09 s is written: every
-#      file written before the kill is still there and unchanged (checksums);
+#   2. the same run killed with SIGKILL once t = 0.1 s is written: every
+#      file written before the kill is still there and unchanged (checksums
+#      taken before the kill);
 #   3. restarted with startFrom latestTime to 0.16 s: the particle position
 #      and velocity and the fields U, p_rgh, alpha.water, voidfraction at
 #      0.16 s agree with run 1 to 1e-6 relative; the particle history
@@ -39,15 +40,16 @@ do
     kill -0 $pid 2>/dev/null || break
     sleep 0.1
 done
+# what the kill must not touch: every complete time folder (with its DEM
+# state), checksummed while the run still goes on, before the kill (the
+# DEM state, renamed into place, is the last file of a time folder)
+[ -f 0.1/liggghts.restart ] || { kill -9 $pid 2>/dev/null; fail "the run ended before writing t = 0.1"; }
+find 0.02 0.04 0.06 0.08 0.1 -type f | sort | xargs md5sum > ../restart-beforeKill.md5
 kill -9 $pid 2>/dev/null
 wait $pid 2>/dev/null
-[ -f 0.1/liggghts.restart ] || fail "the run ended before writing t = 0.1"
+[ "$(wc -l < ../restart-beforeKill.md5)" -gt 20 ] || fail "too few files written before the kill"
 latest=$(foamListTimes -latestTime 2>/dev/null | tail -n 1)
 echo "killed after t = 0.1 was written; latest time folder: $latest"
-# what the kill must not touch: every complete time folder (with its DEM
-# state) and the particle history up to then
-find 0.02 0.04 0.06 0.08 0.1 -type f | sort | xargs md5sum > ../restart-beforeKill.md5
-[ "$(wc -l < ../restart-beforeKill.md5)" -gt 20 ] || fail "too few files written before the kill"
 
 # an incomplete latest folder (killed while writing) is removed by the user;
 # here: keep only folders that hold the DEM state
