@@ -10,6 +10,32 @@ runDir="$testsDir/run"
 fail() { echo "FAIL: $*" 1>&2; exit 1; }
 pass() { echo "PASS: $*"; exit 0; }
 
+# Numbers read from logs and tables. In awk an empty or non-numeric value
+# compares as true ("" < 1), so a check on a missing line would pass: every
+# value a check reads goes through these first.
+#   isNumber <value>           true for a finite decimal number only
+#                              (not empty, not text, not nan or inf)
+#   requireNumber <what> <value>   fail unless it is one
+#   check <what> <value> <condition on v> <message>
+#                              fail with <message> unless <value> is a
+#                              number and the awk condition holds, e.g.
+#                              check "water balance" "$b" 'v > -1 && v < 1' "..."
+isNumber()
+{
+    [[ "$1" =~ ^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$ ]]
+}
+
+requireNumber()
+{
+    isNumber "$2" || fail "$1: not a number ('$2'): missing or unreadable"
+}
+
+check()
+{
+    requireNumber "$1" "$2"
+    awk -v v="$2" "BEGIN { exit !($3) }" || fail "$4"
+}
+
 # Fresh copy of a tutorial under tests/run/<name>
 copyTutorial()
 {
@@ -29,13 +55,17 @@ setEntry()
 }
 
 # Largest relative deviation from the first value in column 2 of a
-# function-object table (comment lines skipped)
+# function-object table (comment lines skipped); prints nan and returns 1
+# for a missing or empty table, a row without a number in column 2, or a
+# first value of 0
 maxRelativeDrift()
 {
-    awk '!/^#/ && NF >= 2 {
-        if (!n++) { v0 = $2 }
+    [ -s "$1" ] || { echo "nan"; return 1; }
+    awk '!/^#/ && NF >= 1 {
+        if (NF < 2 || $2 !~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/) { bad = 1; exit }
+        if (!n++) { v0 = $2; if (v0 == 0) { bad = 1; exit } }
         d = ($2 - v0)/v0; if (d < 0) d = -d; if (d > m) m = d
-    } END { if (!n) { print "nan"; exit 1 } printf "%.3e\n", m }' "$1"
+    } END { if (bad || !n) { print "nan"; exit 1 } printf "%.3e\n", m }' "$1"
 }
 
 # The singleParticleSettling tutorial narrowed to one 20 mm column

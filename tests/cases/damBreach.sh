@@ -10,6 +10,9 @@
 #     than the smallest grain diameter (20 mm) after it does,
 #   - water volume balance in - out - storage closes to 1 % of the inflow,
 #   - tables, plots and the ParaView files are written.
+# Each value is read from damBreach.summary and must be a number (a missing
+# line fails); negative controls: the checks fail on the summary without any
+# one of these lines, and on an empty one.
 . "$(dirname "$0")/caseFunctions.sh"
 
 copyTutorial landslideDamBreach damBreach
@@ -25,23 +28,48 @@ do
 done
 cat "$case"/damBreach.summary
 
-value() { awk -v k="$1" 'index($0, k) == 1 { print $NF }' "$case"/damBreach.summary; }
-H0=$(value 'initial dam height')
-moved=$(value 'largest grain displacement')
-over=$(value 'overtopping from t')
-lost=$(value 'height lost after overtopping')
-balance=$(value 'water balance error')
+# summaryChecks <summary file>: every quantity present, a number, in range
+summaryChecks()
+{
+    local s="$1"
+    value() { awk -v k="$1" 'index($0, k) == 1 { print $NF }' "$s"; }
+    H0=$(value 'initial dam height')
+    moved=$(value 'largest grain displacement')
+    over=$(value 'overtopping from t')
+    lost=$(value 'height lost after overtopping')
+    balance=$(value 'water balance error')
+    check "initial dam height" "$H0" 'v >= 0.26 && v <= 0.32' \
+        "the poured dam is $H0 m high, not 0.3 m (0.26-0.32)"
+    check "largest grain displacement" "$moved" 'v > 0.04' \
+        "no grain moved more than 40 mm (largest displacement $moved m)"
+    check "overtopping time" "$over" 'v >= 0' \
+        "the lake never overtopped the crest"
+    check "height lost after overtopping" "$lost" 'v > 0.02' \
+        "the crest lost only $lost m after overtopping (> 0.02 m expected)"
+    check "water balance error" "$balance" 'v > -1 && v < 1' \
+        "water balance off by $balance % of the inflow (1 % allowed)"
+}
 
-awk -v h="$H0" 'BEGIN { exit !(h >= 0.26 && h <= 0.32) }' \
-    || fail "the poured dam is $H0 m high, not 0.3 m (0.26-0.32)"
-awk -v d="$moved" 'BEGIN { exit !(d > 0.04) }' \
-    || fail "no grain moved more than 40 mm (largest displacement $moved m)"
-awk -v t="$over" 'BEGIN { exit !(t >= 0) }' \
-    || fail "the lake never overtopped the crest"
-awk -v l="$lost" 'BEGIN { exit !(l > 0.02) }' \
-    || fail "the crest lost only ${lost:-nothing} m after overtopping (> 0.02 m expected)"
-awk -v b="$balance" 'BEGIN { if (b < 0) b = -b; exit !(b < 1) }' \
-    || fail "water balance off by $balance % of the inflow (1 % allowed)"
+# negative controls: the checks must fail on the summary without any one of
+# its checked lines, and on an empty one (a missing value is no pass)
+for key in 'initial dam height' 'largest grain displacement' 'overtopping from t' \
+           'height lost after overtopping' 'water balance error' ''
+do
+    if [ -n "$key" ]
+    then
+        grep -v "^$key" "$case"/damBreach.summary > summary.broken
+    else
+        : > summary.broken
+    fi
+    [ "$(wc -l < summary.broken)" -lt "$(wc -l < "$case"/damBreach.summary)" ] \
+        || fail "negative control: no '$key' line to remove"
+    msg=$( (summaryChecks summary.broken) 2>&1 ) \
+        && fail "the checks pass on a summary without '${key:-any line}'"
+    echo "negative control, summary without '${key:-any line}': ${msg#FAIL: }"
+done
+rm -f summary.broken
+
+summaryChecks "$case"/damBreach.summary
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"

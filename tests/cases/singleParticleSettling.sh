@@ -91,9 +91,11 @@ then
 fi
 
 table=postProcessing/waterVolume/0/volFieldValue.dat
-drift=$(maxRelativeDrift "$table") || fail "cannot read $table"
-echo "water volume: max relative drift $drift (limit 1e-6)"
-awk -v d="$drift" 'BEGIN { exit !(d < 1e-6) }' || fail "water volume drift $drift >= 1e-6"
+steps=$(grep -vc '^#' "$table" 2>/dev/null)
+check "water volume table rows" "$steps" 'v >= 100' "only ${steps:-no} rows in $table"
+drift=$(maxRelativeDrift "$table") || fail "cannot read $table (missing, empty or not numbers)"
+echo "water volume: $steps steps, max relative drift $drift (limit 1e-6)"
+check "water volume drift" "$drift" 'v < 1e-6' "water volume drift $drift >= 1e-6"
 
 /usr/bin/python3 plotSettling.py . --check --noPlot || fail "settling velocity against eq. 19"
 

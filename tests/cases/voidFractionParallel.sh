@@ -4,7 +4,8 @@
 # that METIS splits across 2 subdomains: for centre, divided and
 # virtualSphere, the voidfraction field on 2 ranks (reconstructPar) equals
 # the serial one to 1e-12, and sum(eps V) = V_box - sum(V_p) to 1e-9
-# relative (no volume lost at the processor boundary).
+# relative (no volume lost at the processor boundary). A missing, empty or
+# non-numeric field or table fails; negative controls at the end check that.
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 
@@ -17,6 +18,29 @@ internalValues()
 {
     awk '/^internalField/ { f = 1; next } f && /^\(/ { g = 1; next }
          g && /^\)/ { exit } g { print }' "$1"
+}
+
+# largest |a - b| of two columns of numbers, line by line; fails on a
+# non-numeric or missing value or on lists of different length
+largestDifference()
+{
+    paste "$1" "$2" | awk -v num='^[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?$' '
+        NF != 2 || $1 !~ num || $2 !~ num { bad = 1; exit }
+        { n++; d = $1 - $2; if (d < 0) d = -d; if (d > m) m = d }
+        END { if (bad || !n) exit 1; printf "%.3e\n", m }'
+}
+
+# largest relative error of sum(eps V) against V_box - sum(V_p) over the rows
+# of the fluidVolume table; fails on a missing or empty table or a
+# non-numeric row
+volumeError()
+{
+    [ -s "$1" ] || return 1
+    awk -v vb="$Vbox" -v vp="$Vp" -v num='^[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?$' '
+        /^#/ || NF == 0 { next }
+        NF < 2 || $2 !~ num { bad = 1; exit }
+        { n++; e = ($2 - (vb - vp))/vp; if (e < 0) e = -e; if (e > m) m = e }
+        END { if (bad || !n) exit 1; printf "%.3e\n", m }' "$1"
 }
 
 Vbox=1.6e-05
@@ -46,24 +70,41 @@ do
 
     internalValues "$model-serial/0.0003/voidfraction" > "$model.serial"
     internalValues "$model-parallel/0.0003/voidfraction" > "$model.parallel"
-    n=$(wc -l < "$model.serial")
-    [ "$n" -eq 250 ] || fail "$model: expected 250 cell values, found $n"
-    diff=$(paste "$model.serial" "$model.parallel" \
-        | awk '{ d = $1 - $2; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3e\n", m }')
+    for mode in serial parallel
+    do
+        n=$(wc -l < "$model.$mode")
+        [ "$n" -eq 250 ] || fail "$model: expected 250 $mode cell values, found $n"
+    done
+    diff=$(largestDifference "$model.serial" "$model.parallel") \
+        || fail "$model: non-numeric voidfraction values ($model.serial, $model.parallel)"
     minEps=$(sort -g "$model.serial" | head -n 1)
 
     table="$model-parallel/postProcessing/fluidVolume/0/volFieldValue.dat"
-    err=$(awk -v vb="$Vbox" -v vp="$Vp" '!/^#/ && NF >= 2 {
-            e = ($2 - (vb - vp))/vp; if (e < 0) e = -e; if (e > m) m = e
-          } END { printf "%.3e\n", m }' "$table")
+    err=$(volumeError "$table") || fail "$model: no particle volume table $table (or no number in it)"
     echo "$model: max |eps serial - eps 2 ranks| = $diff, min eps $minEps," \
          "particle volume error on 2 ranks $err (relative)"
-    awk -v d="$diff" 'BEGIN { exit !(d < 1e-12) }' \
-        || fail "$model: eps on 2 ranks differs from serial by $diff"
-    awk -v e="$err" 'BEGIN { exit !(e < 1e-9) }' \
-        || fail "$model: particle volume not conserved on 2 ranks ($err)"
-    awk -v m="$minEps" 'BEGIN { exit !(m < 0.999) }' \
-        || fail "$model: no particle volume in the field (min eps $minEps)"
+    check "$model: eps difference" "$diff" 'v < 1e-12' \
+        "$model: eps on 2 ranks differs from serial by $diff"
+    check "$model: particle volume error" "$err" 'v < 1e-9' \
+        "$model: particle volume not conserved on 2 ranks ($err)"
+    check "$model: min eps" "$minEps" 'v < 0.999' \
+        "$model: no particle volume in the field (min eps $minEps)"
 done
+
+# negative controls: the volume check fails on a missing table, an empty
+# one and one with its header only; the eps comparison on a field cut short
+# or with a non-numeric value
+grep '^#' "$table" > header.dat; : > empty.dat
+for t in missing.dat empty.dat header.dat
+do
+    volumeError "$t" > /dev/null && fail "the volume check passes on $t"
+done
+head -n 100 centre.parallel > cut.dat
+largestDifference centre.serial cut.dat > /dev/null \
+    && fail "the eps comparison passes on a field cut short"
+sed '7s/.*/nan/' centre.parallel > nan.dat
+largestDifference centre.serial nan.dat > /dev/null \
+    && fail "the eps comparison passes on a field with nan"
+echo "negative controls: the checks fail on a missing, empty or header-only volume table and on a cut or nan eps field"
 
 pass "voidfraction on 2 ranks = serial, particle volume conserved"

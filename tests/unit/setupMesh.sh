@@ -5,4 +5,6 @@ rm -rf "$runDir/meshCase"; mkdir -p "$runDir"
 cp -r "$testsDir/unit/meshCase" "$runDir/meshCase"
 blockMesh -case "$runDir/meshCase" > "$runDir/meshCase/log.blockMesh" 2>&1 \
     || fail "blockMesh of the unit-test mesh"
-pass "unit-test mesh"
+n=$(sed -n 's/.*nCells:[[:space:]]*\([0-9]*\).*/\1/p' "$runDir/meshCase/constant/polyMesh/owner" | head -n 1)
+check "cells of the unit-test mesh" "$n" 'v > 0' "the unit-test mesh has no cells"
+pass "unit-test mesh ($n cells)"
