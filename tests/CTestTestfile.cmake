@@ -76,3 +76,23 @@ set_tests_properties(case.exchangeIdentical PROPERTIES LABELS "case;coupled;para
 # the particles (warm pixels > 2 %); with the cloud removed the check fails
 add_test(case.render "bash" "cases/render.sh")
 set_tests_properties(case.render PROPERTIES LABELS "case;render" TIMEOUT 300 SKIP_RETURN_CODE 77)
+
+# Physics against references (issue 16): the seed's settling particle with
+# cells as large as it (virtualSphere within 1.5 % of eq. 19 at dx/d = 1, 2;
+# centre at dx/d = 1 must be worse), minimum fluidization against Wen-Yu
+# (20 %; Schiller-Naumann must miss), Saffman and Magnus lift on a held
+# particle against eqs. 15-16 (2 %; reversed lag or spin must flip them)
+add_test(case.cellSizeSettling "bash" "cases/cellSizeSettling.sh")
+set_tests_properties(case.cellSizeSettling PROPERTIES LABELS "case;coupled;voidFraction" TIMEOUT 300)
+
+add_test(case.minFluidization "bash" "cases/minFluidization.sh")
+set_tests_properties(case.minFluidization PROPERTIES LABELS "case;coupled;forces" TIMEOUT 300)
+
+add_test(case.minFluidizationControl "bash" "cases/minFluidization.sh" "control")
+set_tests_properties(case.minFluidizationControl PROPERTIES LABELS "case;coupled;forces" TIMEOUT 300)
+
+add_test(case.liftSaffman "bash" "cases/liftForces.sh" "saffman")
+set_tests_properties(case.liftSaffman PROPERTIES LABELS "case;coupled;forces" TIMEOUT 120)
+
+add_test(case.liftMagnus "bash" "cases/liftForces.sh" "magnus")
+set_tests_properties(case.liftMagnus PROPERTIES LABELS "case;coupled;forces" TIMEOUT 120)
