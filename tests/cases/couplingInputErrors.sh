@@ -139,7 +139,7 @@ expectError restartNoScript "demRestartScript" "read_restart"
 
 setEntry system/controlDict startFrom latestTime
 mv 0.0003/liggghts.restart 0.0003/liggghts.restart.kept
-expectError restartNoDemState "DEM state of that time is missing" "0.0003/liggghts.restart"
+expectError restartNoDemState "Cannot restart at t = 0.0003 s" "0.0003/liggghts.restart"
 mv 0.0003/liggghts.restart.kept 0.0003/liggghts.restart
 
 # guards that warn and go on, and one that stops

@@ -28,6 +28,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "particleCloud.H"
+#include "demRestartFile.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 
@@ -41,9 +42,23 @@ int main(int argc, char *argv[])
         " coupled to LIGGGHTS particles (CFD-DEM)."
     );
 
+    demCoupling::demRestartFile::addOption();
+
     #include "postProcess.H"
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+
+    // A restart first verifies the DEM state of its start time (and, with
+    // -restartFromLastComplete, falls back to the latest complete time)
+    {
+        Time startTime(Time::controlDictName, args);
+        demCoupling::demRestartFile::selectStartTime
+        (
+            startTime,
+            args.found("restartFromLastComplete")
+        );
+    }
+
     #include "createTime.H"
     #include "createMesh.H"
     #include "createControl.H"
@@ -103,7 +118,8 @@ int main(int argc, char *argv[])
 
         particles.checkFinite();
 
-        runTime.write();
+        // the fields; a failed write (full disk) says so
+        demCoupling::demRestartFile::writeFluid(runTime);
         if (runTime.writeTime())
         {
             particles.writeParticles();

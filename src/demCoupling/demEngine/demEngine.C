@@ -1,4 +1,5 @@
 #include "demEngine.H"
+#include "demRestartFile.H"
 #include "IFstream.H"
 #include "Pstream.H"
 #include "mathematicalConstants.H"
@@ -8,14 +9,17 @@
 #include <unistd.h>
 #include <cmath>
 #include <fenv.h>
+#include <csignal>
 
 // LIGGGHTS, through its installed C++ headers (libliggghts-dev)
 #include "liggghts/lammps.h"
 #include "liggghts/input.h"
 #include "liggghts/atom.h"
+#include "liggghts/atom_vec.h"
 #include "liggghts/modify.h"
 #include "liggghts/fix.h"
 #include "liggghts/update.h"
+#include "liggghts/universe.h"
 #include "liggghts/domain.h"
 #include "liggghts/fix_property_global.h"
 
@@ -65,6 +69,33 @@ MPI_Comm solverComm()
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::demCoupling::demEngine::command
+(
+    const std::string& cmd,
+    const bool isScript
+)
+{
+    const std::string what(isScript ? "the script " + cmd : cmd);
+    if (screenGuard_.valid())
+    {
+        screenGuard_->startCommand(what);
+    }
+    if (logGuard_.valid())
+    {
+        logGuard_->startCommand(what);
+    }
+    fpeTrapsOff noTraps;
+    if (isScript)
+    {
+        lmp_->input->file(cmd.c_str());
+    }
+    else
+    {
+        lmp_->input->one(cmd.c_str());
+    }
+}
+
 
 void Foam::demCoupling::demEngine::scanScript
 (
@@ -223,9 +254,9 @@ Foam::fileName Foam::demCoupling::demEngine::restartFile
     const word& timeName
 )
 {
-    // The master's time folder (processor0's in a decomposed case), the
-    // same name on every rank
-    fileName file(runTime.path()/timeName/"liggghts.restart");
+    // The master's (processor0's in a decomposed case), the same name on
+    // every rank
+    fileName file(demRestartFile(runTime, timeName).file());
     Pstream::scatter(file);
     return file;
 }
@@ -255,19 +286,22 @@ Foam::demCoupling::demEngine::demEngine
     fileName restart;
     if (runTime.value() > 0)
     {
+        const demRestartFile state(runTime, runTime.timeName());
         restart = restartFile(runTime, runTime.timeName());
-        bool found = Pstream::master() ? isFile(restart) : false;
-        Pstream::scatter(found);
-        if (!found)
+        string why;
+        if (Pstream::master())
+        {
+            why = state.problem();
+        }
+        Pstream::scatter(why);
+        if (!why.empty())
         {
             FatalIOErrorInFunction(runTime.controlDict())
                 << "The run starts at t = " << runTime.timeName()
-                << " s, but the DEM state of that time is missing: "
-                << restart << nl
-                << "    interDemFoam writes it at every write time; a time"
-                << " folder without it was written by another program or"
-                << " cut short (killed while writing)." << nl
-                << "    Start from an earlier time that has one (startFrom"
+                << " s, but the DEM state of that time is not usable: "
+                << restart << nl << "    " << why.c_str() << "." << nl
+                << "    Start from an earlier complete time"
+                << " (interDemFoam -restartFromLastComplete, or startFrom"
                 << " startTime; startTime <t>), or from 0."
                 << exit(FatalIOError);
         }
@@ -318,15 +352,18 @@ Foam::demCoupling::demEngine::demEngine
     );
     // On a restart the script gets the file as the index variable
     // restartFile (set before the script runs, so a script's own
-    // "variable restartFile index <default>" yields to it)
-    std::string a0("liggghts"), a1("-log"), a2(demLog), a3("-echo"),
-        a4("none"), a5("-var"), a6("restartFile"), a7(restart);
+    // "variable restartFile index <default>" yields to it). LIGGGHTS's
+    // screen and log go through output guards (set below), so it opens
+    // neither itself.
+    std::string a0("liggghts"), a1("-log"), a2("none"), a3("-screen"),
+        a4("none"), a5("-echo"), a6("none"), a7("-var"), a8("restartFile"),
+        a9(restart);
     char* argv[] =
     {
         &a0[0], &a1[0], &a2[0], &a3[0], &a4[0], &a5[0], &a6[0], &a7[0],
-        nullptr
+        &a8[0], &a9[0], nullptr
     };
-    const int argc = restarted_ ? 8 : 5;
+    const int argc = restarted_ ? 10 : 7;
 
     Info<< "DEM: LIGGGHTS on " << Pstream::nProcs() << " rank(s), script "
         << script_ << ", log " << demLog;
@@ -336,11 +373,30 @@ Foam::demCoupling::demEngine::demEngine
     }
     Info<< endl;
 
+    // A write beyond a file-size limit (ulimit -f) fails with EFBIG instead
+    // of killing the process (SIGXFSZ): the failed write is then found and
+    // reported (demRestartFile::commit)
+    std::signal(SIGXFSZ, SIG_IGN);
+
     {
         fpeTrapsOff noTraps;
         lmp_ = new LAMMPS_NS::LAMMPS(argc, argv, solverComm());
-        lmp_->input->file(script_.c_str());
     }
+    screenGuard_.reset(new demOutputGuard("screen", stdout, false));
+    lmp_->screen = screenGuard_->stream();
+    if (Pstream::master())
+    {
+        FILE* log = std::fopen(demLog.c_str(), "w");
+        if (!log)
+        {
+            FatalErrorInFunction
+                << "Cannot open the DEM log " << demLog << exit(FatalError);
+        }
+        std::fprintf(log, "LIGGGHTS (%s)\n", lmp_->universe->version);
+        logGuard_.reset(new demOutputGuard(demLog, log, true));
+        lmp_->logfile = logGuard_->stream();
+    }
+    command(script_, true);
 
     // Authoritative check on the live instance (the script may 'include')
     if
@@ -372,7 +428,14 @@ Foam::demCoupling::demEngine::demEngine
 
 Foam::demCoupling::demEngine::~demEngine()
 {
+    if (logGuard_.valid())
+    {
+        // LIGGGHTS closes its log itself
+        lmp_->logfile = nullptr;
+    }
     delete lmp_;
+    logGuard_.clear();
+    screenGuard_.clear();
     if (ownsMPI_)
     {
         int down = 0;
@@ -415,25 +478,31 @@ void Foam::demCoupling::demEngine::writeRestart(const Time& runTime)
             << runTime.timeName() << " s" << endl;
         return;
     }
-    // Written to a temporary name, then renamed: a run killed while
-    // writing leaves no half restart file under the real name
-    const fileName file(restartFile(runTime, runTime.timeName()));
-    const fileName tmp(file + ".writing");
+    // Written to a temporary name, checked, then renamed, and the check
+    // file written last: a run killed or a disk filled while writing
+    // leaves no half restart file under the real name
+    const demRestartFile state(runTime, runTime.timeName());
+    const fileName tmp(state.writingFile());
     if (Pstream::master())
     {
-        mkDir(file.path());
+        mkDir(tmp.path());
     }
-    const std::string cmd("write_restart " + tmp);
+    command("write_restart " + tmp);
+
+    // What every rank's atom block in the file must hold (LIGGGHTS writes
+    // one per rank, rank order, led by its length in doubles)
+    int blockDoubles = lmp_->atom->avec->size_restart();
+    List<int> blocks(Pstream::nProcs(), 0);
+    MPI_Allgather
+    (
+        &blockDoubles, 1, MPI_INT, blocks.data(), 1, MPI_INT, solverComm()
+    );
+    labelList atomBlockDoubles(blocks.size());
+    forAll(blocks, i)
     {
-        fpeTrapsOff noTraps;
-        lmp_->input->one(cmd.c_str());
+        atomBlockDoubles[i] = blocks[i];
     }
-    if (Pstream::master() && !Foam::mv(tmp, file))
-    {
-        FatalErrorInFunction
-            << "Cannot rename " << tmp << " to " << file
-            << exit(FatalError);
-    }
+    state.commit(runTime, atomBlockDoubles, nParticles());
 }
 
 
@@ -452,14 +521,14 @@ void Foam::demCoupling::demEngine::deleteParticles(const labelList& tags)
         {
             cmd += ' ' + std::to_string(tags[i]);
         }
-        lmp_->input->one(cmd.c_str());
+        command(cmd);
     }
-    lmp_->input->one("delete_atoms group interDemFoamOutside compress no");
-    lmp_->input->one("group interDemFoamOutside delete");
+    command("delete_atoms group interDemFoamOutside compress no");
+    command("group interDemFoamOutside delete");
     if (nParticles() == 0)
     {
         // LIGGGHTS cannot sort an empty system (bin size 0): stop sorting
-        lmp_->input->one("atom_modify sort 0 0.0");
+        command("atom_modify sort 0 0.0");
     }
 
     // The atom count changed: the next run needs LIGGGHTS's setup again
@@ -579,10 +648,7 @@ void Foam::demCoupling::demEngine::advance(const label nSteps)
       + (firstRun_ ? "" : " pre no post no")
     );
 
-    {
-        fpeTrapsOff noTraps;
-        lmp_->input->one(cmd.c_str());
-    }
+    command(cmd);
 
     firstRun_ = false;
     started_ = true;
