@@ -77,6 +77,26 @@ set_tests_properties(case.exchangeIdentical PROPERTIES LABELS "case;coupled;para
 add_test(case.render "bash" "cases/render.sh")
 set_tests_properties(case.render PROPERTIES LABELS "case;render" TIMEOUT 300 SKIP_RETURN_CODE 77)
 
+# Damaged DEM restart files, serial and on 2 ranks: a truncated file (and
+# the same file read by LIGGGHTS: the output guard), a kill while the file is
+# written, a full disk (tmpfs; skipped without root). Each stops within 30 s
+# with < 10 MB of output and restarts with -restartFromLastComplete.
+add_test(case.restartTruncated "bash" "cases/restartDamaged.sh" "truncated")
+set_tests_properties(case.restartTruncated PROPERTIES LABELS "case;coupled;reliability" TIMEOUT 600)
+
+add_test(case.restartKilled "bash" "cases/restartDamaged.sh" "killed")
+set_tests_properties(case.restartKilled PROPERTIES LABELS "case;coupled;reliability" TIMEOUT 600)
+
+add_test(case.restartDiskFull "bash" "cases/restartDamaged.sh" "diskFull")
+set_tests_properties(case.restartDiskFull PROPERTIES
+    LABELS "case;coupled;reliability" TIMEOUT 600 SKIP_RETURN_CODE 77)
+
+# A particle straddling a cyclic patch: virtualSphere and divided put the
+# same eps on both sides as the same particle in a larger box, serial and on
+# 2 ranks with the cyclic pair split between them
+add_test(case.periodicVoidFraction "bash" "cases/periodicVoidFraction.sh")
+set_tests_properties(case.periodicVoidFraction PROPERTIES LABELS "case;coupled;parallel" TIMEOUT 600)
+
 # Physics against references (issue 16): the seed's settling particle with
 # cells as large as it (virtualSphere within 1.5 % of eq. 19 at dx/d = 1, 2;
 # centre at dx/d = 1 must be worse), minimum fluidization against Wen-Yu

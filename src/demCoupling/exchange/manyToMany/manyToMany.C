@@ -54,6 +54,7 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
     particleExchange(),
     procBounds_(),
     centreBounds_(),
+    periodic_(mesh),
     sendIndices_(),
     sendCounts_(),
     recvCounts_(),
@@ -175,7 +176,17 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
         bool sent = false;
         forAll(procBounds_, r)
         {
-            if (procBounds_[r].contains(x) || reached[r].overlaps(reach))
+            bool needed =
+                procBounds_[r].contains(x) || reached[r].overlaps(reach);
+            for (const vector& s : periodic_.shifts())
+            {
+                needed = needed
+                 || reached[r].overlaps
+                    (
+                        boundBox(reach.min() + s, reach.max() + s)
+                    );
+            }
+            if (needed)
             {
                 dest[r].append(i);
                 sent = true;

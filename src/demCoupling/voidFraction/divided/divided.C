@@ -82,15 +82,28 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
         const scalar r = 0.5*particles.diameter[i];
         const point& x0 = particles.position[i];
 
-        // Another processor's particle: only if it reaches this mesh
-        if
-        (
-            host < 0
-         && !localBounds.overlaps(boundBox(x0 - vector::uniform(r),
-                                           x0 + vector::uniform(r)))
-        )
+        // Another processor's particle: only if it (or one of its
+        // periodic images) reaches this mesh
+        if (host < 0)
         {
-            continue;
+            bool reaches = localBounds.overlaps
+            (
+                boundBox(x0 - vector::uniform(r), x0 + vector::uniform(r))
+            );
+            for (const vector& s : periodic_.shifts())
+            {
+                reaches = reaches || localBounds.overlaps
+                (
+                    boundBox
+                    (
+                        x0 + s - vector::uniform(r), x0 + s + vector::uniform(r)
+                    )
+                );
+            }
+            if (!reaches)
+            {
+                continue;
+            }
         }
 
         cells.clear();
@@ -102,6 +115,22 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
             if (host >= 0 || localBounds.contains(x))
             {
                 c = particleLocator::findCellNear(mesh_, x, host);
+            }
+            // Beyond a cyclic patch (outside the whole mesh's box: a point
+            // on the patch itself belongs to this side): the point's
+            // periodic image
+            for
+            (
+                label k = 0;
+                c < 0 && k < periodic_.shifts().size() && periodic_.outside(x);
+                ++k
+            )
+            {
+                const point xImage(x + periodic_.shifts()[k]);
+                if (localBounds.contains(xImage))
+                {
+                    c = particleLocator::findCellNear(mesh_, xImage, -1);
+                }
             }
             if (c < 0)
             {
@@ -132,7 +161,8 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
         }
     }
 
-    // A point outside every processor's mesh (beyond a wall) is left out
+    // A point outside every processor's mesh (beyond a wall; beyond a
+    // cyclic patch it lands on the periodic image) is left out
     normaliseWeights(particles);
 }
 

@@ -143,48 +143,66 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
 
         const point& x0 = particles.position[i];
         const scalar R = 0.5*diameterRatio_*particles.diameter[i];
-        if
-        (
-            host < 0
-         && !localBounds.overlaps
-            (
-                boundBox(x0 - vector::uniform(R), x0 + vector::uniform(R))
-            )
-        )
-        {
-            continue;
-        }
+        const scalar R2 = sqr(R);
 
-        // Cells whose centre is inside the sphere (bins of cell centres
-        // that the sphere's box overlaps, filtered exactly); the host always
+        // Cells whose centre is inside the sphere around x (bins of cell
+        // centres that the sphere's box overlaps, filtered exactly); the
+        // host always. An image of the sphere (across cyclic patches) may
+        // reach cells the sphere itself reached: those are taken once.
         cells.clear();
         bool haveHost = false;
-        const scalar R2 = sqr(R);
-        label lo[3], hi[3];
-        for (direction k = 0; k < 3; ++k)
+        const auto collect = [&](const point& x, const bool image)
         {
-            lo[k] = binOf(x0[k] - R, k);
-            hi[k] = binOf(x0[k] + R, k);
-        }
-        for (label bz = lo[2]; bz <= hi[2]; ++bz)
-        {
-            for (label by = lo[1]; by <= hi[1]; ++by)
+            if
+            (
+                !localBounds.overlaps
+                (
+                    boundBox(x - vector::uniform(R), x + vector::uniform(R))
+                )
+            )
             {
-                const label row = nBins_[0]*(by + nBins_[1]*bz);
-                for (label bx = lo[0]; bx <= hi[0]; ++bx)
+                return;
+            }
+            label lo[3], hi[3];
+            for (direction k = 0; k < 3; ++k)
+            {
+                lo[k] = binOf(x[k] - R, k);
+                hi[k] = binOf(x[k] + R, k);
+            }
+            for (label bz = lo[2]; bz <= hi[2]; ++bz)
+            {
+                for (label by = lo[1]; by <= hi[1]; ++by)
                 {
-                    const label bin = row + bx;
-                    for (label j = binStart_[bin]; j < binStart_[bin + 1]; ++j)
+                    const label row = nBins_[0]*(by + nBins_[1]*bz);
+                    for (label bx = lo[0]; bx <= hi[0]; ++bx)
                     {
-                        const label c = binCells_[j];
-                        if (c == host || magSqr(C[c] - x0) <= R2)
+                        const label bin = row + bx;
+                        for
+                        (
+                            label j = binStart_[bin];
+                            j < binStart_[bin + 1];
+                            ++j
+                        )
                         {
-                            cells.append(c);
-                            haveHost = haveHost || c == host;
+                            const label c = binCells_[j];
+                            if
+                            (
+                                (c == host || magSqr(C[c] - x) <= R2)
+                             && (!image || cells.find(c) < 0)
+                            )
+                            {
+                                cells.append(c);
+                                haveHost = haveHost || c == host;
+                            }
                         }
                     }
                 }
             }
+        };
+        collect(x0, false);
+        for (const vector& shift : periodic_.shifts())
+        {
+            collect(x0 + shift, true);
         }
         if (host >= 0 && !haveHost)
         {

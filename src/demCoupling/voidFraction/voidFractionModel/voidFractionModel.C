@@ -17,6 +17,7 @@ Foam::demCoupling::voidFractionModel::voidFractionModel
 )
 :
     mesh_(mesh),
+    periodic_(mesh),
     minVoidFraction_
     (
         getAllowed<scalar>
