@@ -14,7 +14,10 @@
 #             whole number of DEM steps
 # explicit:   momentumCoupling explicit (the others use semiImplicit)
 # Also checks the water volume sum(eps alpha V) stays constant (1e-6) while
-# the particle enters the water.
+# the particle enters the water, and the fluid force at water entry: its
+# peak between 0.5 and 1.05 of eq. 19's sharp-interface peak and no
+# step-to-step change above 0.1 + 1.5 v tau/d of it (tau the CFD step);
+# serial: the centre model (a kick at each cell crossing) must fail that.
 #------------------------------------------------------------------------------
 mode="${1:-serial}"
 . "${0%/*}/caseFunctions.sh"
@@ -97,6 +100,23 @@ drift=$(maxRelativeDrift "$table") || fail "cannot read $table (missing, empty o
 echo "water volume: $steps steps, max relative drift $drift (limit 1e-6)"
 check "water volume drift" "$drift" 'v < 1e-6' "water volume drift $drift >= 1e-6"
 
-/usr/bin/python3 plotSettling.py . --check --noPlot || fail "settling velocity against eq. 19"
+/usr/bin/python3 plotSettling.py . --check --noPlot || fail "settling velocity and fluid force against eq. 19"
+
+# Negative control (serial): the centre model kicks the particle at each
+# cell crossing (its cell's eps jumps at once): the force check must fail
+if [ "$mode" = serial ]
+then
+    rm -rf ../settling-centreControl && mkdir ../settling-centreControl
+    cp -r 0 constant system DEM plotSettling.py ../settling-centreControl/
+    cd ../settling-centreControl || fail "cd"
+    sed -i 's/^voidFraction .*/voidFraction      centre;/' constant/couplingProperties
+    runApplication interDemFoam || fail "centre control run"
+    /usr/bin/python3 plotSettling.py . --check --noPlot > log.check 2>&1
+    rc=$?
+    cat log.check | tail -2
+    [ "$rc" -ne 0 ] && grep -q "closest step-to-step change" log.check \
+        || fail "negative control: the force check passes the centre model's kicks"
+    echo "negative control: the centre model's cell-crossing kick fails the force check"
+fi
 
 pass "single particle settling ($mode)"
