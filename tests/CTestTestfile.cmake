@@ -119,3 +119,9 @@ set_tests_properties(case.liftMagnus PROPERTIES LABELS "case;coupled;forces" TIM
 
 add_test(case.damGrading "bash" "cases/damGrading.sh")
 set_tests_properties(case.damGrading PROPERTIES LABELS "case;damBreach" TIMEOUT 400)
+
+# Quiet dense beds: plate pressure of a bed at rest (std <= 1 % of its
+# weight) and fluidized (<= 5 %); the former scheme must fail
+add_test(case.quietBed "bash" "cases/quietBed.sh")
+set_tests_properties(case.quietBed PROPERTIES LABELS "case;coupled;forces" TIMEOUT 600)
+

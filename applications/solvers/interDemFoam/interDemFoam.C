@@ -97,6 +97,23 @@ int main(int argc, char *argv[])
         // particle-fluid forces, fluid source terms (eps, Ksl, Us, fExplicit)
         particles.evolve();
 
+        // d(eps)/dt in the pressure equation: snapshot (difference of two
+        // eps fields) or flux (div of the particles' solid volume flux)
+        const word voidFractionRate
+        (
+            pimple.dict().getOrDefault<word>("voidFractionRate", "flux")
+        );
+        if (voidFractionRate != "snapshot" && voidFractionRate != "flux")
+        {
+            FatalIOErrorInFunction(pimple.dict())
+                << "voidFractionRate '" << voidFractionRate << "' in "
+                << pimple.dict().name() << ": allowed are snapshot (eps"
+                << " difference of two steps) and flux (div of the solid"
+                << " volume flux)" << exit(FatalIOError);
+        }
+        const bool voidFractionRateFlux =
+            voidFractionRate == "flux" && particles.active();
+
         while (pimple.loop())
         {
             #include "alphaControls.H"

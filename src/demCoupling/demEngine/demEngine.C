@@ -30,6 +30,17 @@ namespace
 const char* const dragForceFixId = "dragforce";
 const char* const torqueFixId = "hdtorque";
 
+// couple/cfd/force/implicit's per-atom drag coefficient and fluid velocity
+const char* const KslFixId = "Ksl";
+const char* const ufFixId = "uf";
+
+// Each atom's unwrapped position at the start of the coupling interval and
+// a flag (1 once set): the mean velocity over the interval's DEM steps is
+// the displacement over the interval (velocity Verlet drifts each step with
+// the velocity the step's forces see). A per-atom fix property: it moves
+// with the atom between ranks and is kept in restart files.
+const char* const startFixId = "interDemFoamStart";
+
 // OpenFOAM traps floating-point exceptions (FOAM_SIGFPE); LIGGGHTS is not
 // written for that: an overflow in a script or a blown-up DEM would die of
 // SIGFPE inside LIGGGHTS. Trapping is off while LIGGGHTS runs; non-finite
@@ -203,7 +214,11 @@ void Foam::demCoupling::demEngine::scanScript
                     << exit(FatalIOError);
             }
         }
-        else if (w[3] == "couple/cfd/force" || w[3] == "couple/cfd/dragforce")
+        else if
+        (
+            w[3] == "couple/cfd/force" || w[3] == "couple/cfd/dragforce"
+         || w[3] == "couple/cfd/force/implicit"
+        )
         {
             haveForce = true;
         }
@@ -277,7 +292,9 @@ Foam::demCoupling::demEngine::demEngine
     started_(false),
     inserts_(false),
     emptied_(false),
-    nOwned_(0)
+    nOwned_(0),
+    implicitDrag_(false),
+    interval_(0)
 {
     // Paths of the DEM script (and inside it) are relative to the case
     const fileName caseDir(runTime.globalPath());
@@ -410,6 +427,21 @@ Foam::demCoupling::demEngine::demEngine
             << " couple/cfd with couple/cfd/force (no per-atom array '"
             << dragForceFixId << "')." << exit(FatalIOError);
     }
+    implicitDrag_ =
+        lmp_->modify->find_fix_style_strict("couple/cfd/force/implicit", 0);
+    if (implicitDrag_ && (!lmp_->modify->find_fix_id(KslFixId) || !lmp_->modify->find_fix_id(ufFixId)))
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "LIGGGHTS's couple/cfd/force/implicit in " << script_
+            << " has no per-atom arrays '" << KslFixId << "' and '" << ufFixId
+            << "'" << exit(FatalIOError);
+    }
+    command
+    (
+        std::string("fix ") + startFixId + " all property/atom " + startFixId
+      + " vector yes no no 0 0 0 0"
+    );
+
     if (!lmp_->atom->radius_flag || !lmp_->atom->rmass_flag)
     {
         FatalIOErrorInFunction(couplingDict)
@@ -641,6 +673,19 @@ void Foam::demCoupling::demEngine::advance(const label nSteps)
         return;
     }
 
+    // Where every atom starts this interval (for its mean velocity)
+    {
+        LAMMPS_NS::Fix* start = lmp_->modify->find_fix_id(startFixId);
+        const LAMMPS_NS::Atom& atom = *lmp_->atom;
+        for (int i = 0; i < atom.nlocal; ++i)
+        {
+            double* x0 = start->array_atom[i];
+            lmp_->domain->unmap(atom.x[i], atom.image[i], x0);
+            x0[3] = 1;
+        }
+    }
+    interval_ = nSteps*timeStep();
+
     // The first run sets LIGGGHTS up; later ones continue where it stopped
     const std::string cmd
     (
@@ -663,6 +708,11 @@ void Foam::demCoupling::demEngine::ownedParticles(particleData& owned)
     const int nLocal = atom.nlocal;
 
     owned.resize(nLocal);
+    LAMMPS_NS::Fix* start = lmp_->modify->find_fix_id(startFixId);
+    LAMMPS_NS::Fix* Ksl =
+        implicitDrag_ ? lmp_->modify->find_fix_id(KslFixId) : nullptr;
+    LAMMPS_NS::Fix* uf =
+        implicitDrag_ ? lmp_->modify->find_fix_id(ufFixId) : nullptr;
     for (int i = 0; i < nLocal; ++i)
     {
         const double r = atom.radius[i];
@@ -680,6 +730,27 @@ void Foam::demCoupling::demEngine::ownedParticles(particleData& owned)
             atom.omega
           ? vector(atom.omega[i][0], atom.omega[i][1], atom.omega[i][2])
           : vector::zero;
+        {
+            // mean velocity over the interval: its displacement
+            const double* x0 = start->array_atom[i];
+            double xu[3];
+            lmp_->domain->unmap(atom.x[i], atom.image[i], xu);
+            owned.meanVelocity[i] =
+                x0[3] > 0 && interval_ > 0
+              ? vector(xu[0] - x0[0], xu[1] - x0[1], xu[2] - x0[2])/interval_
+              : owned.velocity[i];
+        }
+        if (implicitDrag_)
+        {
+            owned.demK[i] = Ksl->vector_atom[i];
+            owned.demUf[i] =
+                vector(uf->array_atom[i][0], uf->array_atom[i][1], uf->array_atom[i][2]);
+        }
+        else
+        {
+            owned.demK[i] = 0;
+            owned.demUf[i] = Zero;
+        }
         owned.diameter[i] = 2*r;
         owned.density[i] = atom.rmass[i]/(4.0/3.0*pi*r*r*r);
         owned.cell[i] = -1;
@@ -693,12 +764,18 @@ void Foam::demCoupling::demEngine::ownedParticles(particleData& owned)
 void Foam::demCoupling::demEngine::setForces
 (
     const List<vector>& force,
-    const List<vector>& torque
+    const scalarList& K,
+    const List<vector>& Uf
 )
 {
     // This rank's atoms are those of the last ownedParticles(), same order
     const int nLocal = lmp_->atom->nlocal;
-    if (nLocal != nOwned_ || force.size() != nOwned_)
+    if
+    (
+        nLocal != nOwned_ || force.size() != nOwned_
+     || (K.size() && (K.size() != nOwned_ || Uf.size() != nOwned_))
+     || (K.size() && !implicitDrag_)
+    )
     {
         FatalErrorInFunction
             << "LIGGGHTS changed its local particles between the particle"
@@ -706,10 +783,13 @@ void Foam::demCoupling::demEngine::setForces
             << ", " << force.size() << " forces)" << abort(FatalError);
     }
 
-    LAMMPS_NS::Fix* dragFix = lmp_->modify->find_fix_id(dragForceFixId);
+    double** drag = lmp_->modify->find_fix_id(dragForceFixId)->array_atom;
     LAMMPS_NS::Fix* torqueFix = lmp_->modify->find_fix_id(torqueFixId);
-    double** drag = dragFix->array_atom;
     double** hdTorque = torqueFix ? torqueFix->array_atom : nullptr;
+    double* Ksl =
+        implicitDrag_ ? lmp_->modify->find_fix_id(KslFixId)->vector_atom : nullptr;
+    double** uf =
+        implicitDrag_ ? lmp_->modify->find_fix_id(ufFixId)->array_atom : nullptr;
 
     for (int i = 0; i < nLocal; ++i)
     {
@@ -718,8 +798,17 @@ void Foam::demCoupling::demEngine::setForces
             drag[i][k] = force[i][k];
             if (hdTorque)
             {
-                hdTorque[i][k] = torque.size() ? torque[i][k] : 0.0;
+                hdTorque[i][k] = 0.0;
             }
+            if (uf)
+            {
+                uf[i][k] = K.size() ? Uf[i][k] : 0.0;
+            }
+        }
+        if (Ksl)
+        {
+            // no K given (demDrag explicit): the implicit fix adds no drag
+            Ksl[i] = K.size() ? K[i] : 0.0;
         }
     }
 }

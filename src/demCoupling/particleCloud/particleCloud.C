@@ -1,4 +1,5 @@
 #include "particleCloud.H"
+#include "fvcFlux.H"
 #include "immiscibleIncompressibleTwoPhaseMixture.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
@@ -127,7 +128,8 @@ void checkKeywords(const Foam::dictionary& dict)
     wordList known
     ({
         "demScript", "demRestartScript", "voidFraction", "minVoidFraction",
-        "forces", "momentumCoupling", "outsideParticles", "exchange"
+        "forces", "momentumCoupling", "outsideParticles", "exchange",
+        "demDrag"
     });
     for (const word& m : voidFractionModel::dictionaryConstructorTablePtr_->sortedToc())
     {
@@ -223,6 +225,16 @@ Foam::demCoupling::particleCloud::particleCloud
             IOobject::NO_WRITE
         )
     ),
+    solidFlux_
+    (
+        couplingField
+        (
+            mesh,
+            "solidFlux",
+            dimensionedVector(dimVelocity, Zero),
+            IOobject::NO_WRITE
+        )
+    ),
     owned_(),
     particles_(),
     fluidForce_(),
@@ -232,6 +244,7 @@ Foam::demCoupling::particleCloud::particleCloud
     demSteps_(0),
     lastDemCount_(0),
     outsidePolicy_("ignore"),
+
     deletedNow_(0),
     deletedTotal_(0),
     cellsPerStep_(0),
@@ -292,6 +305,30 @@ Foam::demCoupling::particleCloud::particleCloud
     locator_.reset(new particleLocator(mesh));
 
     engine_.reset(new demEngine(dict, mesh.time()));
+
+    // How the DEM applies the drag (see docs/forces.md, "Quiet dense beds")
+    const word demDrag(dict.getOrDefault<word>("demDrag", "implicit"));
+    if (demDrag != "implicit" && demDrag != "explicit")
+    {
+        FatalIOErrorInFunction(dict)
+            << "demDrag '" << demDrag << "' in " << dict.name() << ": allowed"
+            << " are implicit (the drag K (u - v) applied in every DEM step"
+            << " with the particle's velocity of that step; the default) and"
+            << " explicit (the whole force held over the coupling interval)"
+            << exit(FatalIOError);
+    }
+    implicitDemDrag_ = demDrag == "implicit";
+    if (implicitDemDrag_ && !engine_->implicitDrag())
+    {
+        FatalIOErrorInFunction(dict)
+            << "demDrag implicit (" << (dict.found("demDrag") ? "set" : "the"
+            " default") << " in " << dict.name() << ") needs the fix" << nl
+            << "    fix cfd2 all couple/cfd/force/implicit" << nl
+            << "in the DEM script " << engine_->script() << " instead of"
+            << " couple/cfd/force; or set demDrag explicit."
+            << exit(FatalIOError);
+    }
+    Info<< "DEM drag: " << demDrag << endl;
 
     // The DEM box must hold the whole fluid mesh: where it does not, a
     // particle leaves the DEM while still in the fluid
@@ -388,6 +425,10 @@ void Foam::demCoupling::particleCloud::computeForces()
     Uf_.setSize(n);
     fluidForce_ = Zero;
     K_ = 0;
+    demK_.setSize(n);
+    demForce_.setSize(n);
+    demK_ = 0;
+    demForce_ = Zero;
     reactingForce_ = Zero;
     Uf_ = Zero;
 
@@ -401,6 +442,7 @@ void Foam::demCoupling::particleCloud::computeForces()
         fvc::grad(p)
       - fvc::reconstruct(mixture_.surfaceTensionForce()*mesh_.magSf())
     );
+
 
     // Fields only some force models need
     bool needVorticity = false;
@@ -506,12 +548,15 @@ void Foam::demCoupling::particleCloud::computeForces()
         {
             const particleForce f(model.force(s));
             fluidForce_[i] += f.total(s);
+            demK_[i] += f.K;
             if (model.reactsOnFluid())
             {
                 K_[i] += f.K;
                 reactingForce_[i] += f.explicitForce;
             }
         }
+
+        demForce_[i] = fluidForce_[i] - demK_[i]*(s.Uf - s.Up);
 
         if (!std::isfinite(magSqr(fluidForce_[i])) || !std::isfinite(K_[i]))
         {
@@ -528,11 +573,37 @@ void Foam::demCoupling::particleCloud::computeForces()
         }
     }
 
-    momentumCoupling_->assemble
-    (
-        particles_, voidFraction_(), K_, Uf_, reactingForce_,
-        Ksl_, Us_, fExplicit_
-    );
+    // The solid volume flux of the interval just run
+    {
+        List<vector> Vv(particles_.size());
+        forAll(Vv, i)
+        {
+            Vv[i] = particles_.volume(i)*particles_.meanVelocity[i];
+        }
+        solidFlux_.primitiveFieldRef() = vf.spread(Vv);
+        solidFlux_.correctBoundaryConditions();
+    }
+
+    // The fluid receives the reaction of the force the particles got. With
+    // demDrag implicit that is the drag the DEM applied in the interval
+    // just run, K (u - v) at every step with the DEM's K and u of it: its
+    // mean is K (u - mean v), mean v the displacement over the interval
+    if (implicitDemDrag_)
+    {
+        momentumCoupling_->assemble
+        (
+            particles_, voidFraction_(), particles_.demK, particles_.demUf,
+            particles_.meanVelocity, reactingForce_, Ksl_, Us_, fExplicit_
+        );
+    }
+    else
+    {
+        momentumCoupling_->assemble
+        (
+            particles_, voidFraction_(), K_, Uf_, particles_.velocity,
+            reactingForce_, Ksl_, Us_, fExplicit_
+        );
+    }
 }
 
 
@@ -593,6 +664,50 @@ Foam::scalar Foam::demCoupling::particleCloud::wholeDemSteps
 }
 
 
+void Foam::demCoupling::particleCloud::sendForces()
+{
+    // Summed over the ranks that hold a particle: the host's only
+    List<vector> hostForce(implicitDemDrag_ ? demForce_ : fluidForce_);
+    scalarList hostKUf(implicitDemDrag_ ? 4*hostForce.size() : 0, Zero);
+    forAll(hostForce, i)
+    {
+        if (particles_.hostProc[i] != Pstream::myProcNo())
+        {
+            hostForce[i] = Zero;
+        }
+        else if (implicitDemDrag_)
+        {
+            hostKUf[4*i] = demK_[i];
+            for (direction k = 0; k < 3; ++k)
+            {
+                hostKUf[4*i + 1 + k] = Uf_[i][k];
+            }
+        }
+    }
+    if (implicitDemDrag_)
+    {
+        const scalarList KUf(exchange_->toOwners(hostKUf, 4));
+        scalarList K(KUf.size()/4);
+        List<vector> Uf(K.size());
+        forAll(K, i)
+        {
+            K[i] = KUf[4*i];
+            Uf[i] = vector(KUf[4*i + 1], KUf[4*i + 2], KUf[4*i + 3]);
+        }
+        engine_->setForces(exchange_->toOwners(hostForce), K, Uf);
+    }
+    else
+    {
+        engine_->setForces
+        (
+            exchange_->toOwners(hostForce), scalarList(), List<vector>()
+        );
+    }
+    forcesSent_ = true;
+
+}
+
+
 void Foam::demCoupling::particleCloud::evolve()
 {
     if (!active())
@@ -625,6 +740,16 @@ void Foam::demCoupling::particleCloud::evolve()
             << " DEM steps per coupling step." << nl
             << "    Set couple_every " << demSteps_ << " in the fix couple/cfd,"
             << " or change deltaT in system/controlDict." << exit(FatalIOError);
+    }
+
+    // 0. Before the first DEM advance of a fresh start: the fluid forces of
+    //    the initial state (else the first interval would run without
+    //    them: a free fall of one coupling interval). A restarted DEM
+    //    holds, from its restart file, the forces it had at that time.
+    if (!forcesSent_ && !engine_->restarted())
+    {
+        computeForces();
+        sendForces();
     }
 
     // 1. DEM advance. In parallel the DEM phase ends when its slowest rank
@@ -692,17 +817,8 @@ void Foam::demCoupling::particleCloud::evolve()
     computeForces();
     forcesTime_ += (clock_.elapsedTime() - tf) - (exchange_->seconds() - xf);
 
-    // 7. forces back to the DEM rank that owns each particle (summed over
-    //    the ranks that hold it: the host's only)
-    List<vector> hostForce(fluidForce_);
-    forAll(hostForce, i)
-    {
-        if (particles_.hostProc[i] != Pstream::myProcNo())
-        {
-            hostForce[i] = Zero;
-        }
-    }
-    engine_->setForces(exchange_->toOwners(hostForce), List<vector>());
+    // 7. forces back to the DEM rank that owns each particle
+    sendForces();
 
     couplingTime_ += clock_.elapsedTime() - t1;
     particleSteps_ += exchange_->nTotal();
@@ -836,6 +952,21 @@ void Foam::demCoupling::particleCloud::writeParticles() const
             cloud.fieldIOobject("type", IOobject::NO_READ), type
         ).write();
     }
+}
+
+
+Foam::tmp<Foam::volScalarField>
+Foam::demCoupling::particleCloud::voidFractionRateFromFlux() const
+{
+    surfaceScalarField phiSolid(fvc::flux(solidFlux_));
+    for (fvsPatchScalarField& pf : phiSolid.boundaryFieldRef())
+    {
+        if (!pf.coupled())
+        {
+            pf = 0;
+        }
+    }
+    return fvc::div(phiSolid);
 }
 
 

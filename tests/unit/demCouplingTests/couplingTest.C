@@ -176,7 +176,7 @@ TEST_P(momentumCouplingTest, FluidReceivesMinusTheParticleForce)
     auto Us = newField(mesh, "Us", dimensionedVector(dimVelocity, Zero));
     auto fExp = newField(mesh, "fExplicit",
         dimensionedVector(dimForce/dimVolume, Zero));
-    mc->assemble(p, vf(), K, Uf, Fx, Ksl.ref(), Us.ref(), fExp.ref());
+    mc->assemble(p, vf(), K, Uf, p.velocity, Fx, Ksl.ref(), Us.ref(), fExp.ref());
 
     // Fluid source per cell, Ksl (Us - U) + fExplicit, with U the fluid
     // velocity the particles saw (their K-weighted Uf per cell): summed

@@ -266,8 +266,13 @@ def fluidize(a):
         matplotlib.use('Agg')
         import matplotlib.pyplot as plt
         fig, (ax, ax2) = plt.subplots(2, 1, figsize=(6.4, 6.4), sharex=True)
-        ax.plot([u for _, u, _ in data], [p/W for _, _, p in data], '-',
-                color='0.85', lw=0.3, label='every step')
+        # every CFD step as it is (not clipped): the plate pressure's own
+        # noise, next to the bin means
+        steps = [p/W for _, _, p in data]
+        jumps = [abs(b - a) for a, b in zip(steps, steps[1:])]
+        meanJump = sum(jumps)/max(len(jumps), 1)
+        ax.plot([u for _, u, _ in data], steps, '-', color='0.55', lw=0.5,
+                label='every CFD step (mean step-to-step change %.2g W)' % meanJump)
         ax.plot([u for u, _ in binned], [p/W for _, p in binned], 'o-',
                 ms=3, label='interDemFoam, bin means')
         Us = [Umf*i/50 for i in range(51)]
@@ -277,7 +282,7 @@ def fluidize(a):
         ax.axvline(Uwy, color='r', lw=1, label='Wen-Yu U_mf = %.4f' % Uwy)
         ax.axvline(Umf, color='b', lw=1, ls=':', label='measured U_mf = %.4f' % Umf)
         ax.set_ylabel('dp / (bed weight per area)')
-        ax.set_ylim(0, 1.3)
+        ax.set_ylim(min(0, 1.05*min(steps)), max(1.3, 1.05*max(steps)))
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
         ax2.plot([u for _, u, _ in height], [1e3*(z - z0) for _, _, z in height],

@@ -20,7 +20,8 @@ Usage: plotSettling.py [case] [--zSurface 0.1] [--d 1e-3] [--rhoP 2500]
                    the history after entry within 5 %, and the fluid force
                    bounded: its peak between 0.5 and 1.05 times eq. 19's
                    sharp-interface peak, no step-to-step change above
-                   0.1 + 1.5 v tau/d of that peak, tau the CFD step)
+                   0.1 + 1.5 v tau/d of that peak, tau the CFD step:
+                   --deltaT, 1e-4 s unless given)
 """
 import argparse
 import math
@@ -107,6 +108,8 @@ def main():
     ap.add_argument("--rhoP", type=float, default=2500.0)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--noPlot", action="store_true")
+    ap.add_argument("--deltaT", type=float, default=1e-4,
+                    help="largest CFD step [s] (the force check's tau)")
     args = ap.parse_args()
 
     hist_file = os.path.join(args.case, "particleHistory.dat")
@@ -195,7 +198,9 @@ def main():
     # 0.1 of it for the drag's own dependence on the slip. A kick (a whole
     # particle changing cells at once, as with the centre model) is far
     # above: 1.36 of the peak in one step at 0.13 m/s. The force is held
-    # over a CFD step: tau is the time since it last changed.
+    # over a CFD step, or (implicit drag) changes in every DEM step within
+    # it, jumping at each coupling step: tau is the CFD step (--deltaT),
+    # or the time since the force last changed where that is longer.
     f_peak_ode = f_ode.max()
     peak_ratio = f_sim.max() / f_peak_ode
     changed = np.nonzero(np.diff(f_sim))[0] + 1
@@ -203,7 +208,7 @@ def main():
     for k, i in enumerate(changed):
         tau = t_sim[i] - (t_sim[changed[k - 1]] if k else t_sim[0])
         j = abs(f_sim[i] - f_sim[i - 1]) / f_peak_ode
-        allowed = 0.1 + 1.5 * abs(v_sim[i]) * tau / args.d
+        allowed = 0.1 + 1.5 * abs(v_sim[i]) * max(tau, args.deltaT) / args.d
         if j - allowed > worst_excess:
             worst_excess, jump, jump_allowed, jump_t = j - allowed, j, allowed, t_sim[i]
     print("fluid force: peak %.2f of eq. 19's sharp-interface peak (allowed 0.5-1.05),"

@@ -87,6 +87,12 @@ void Foam::demCoupling::particleExchange::pack
     }
     s[11] = p.diameter[i];
     s[12] = p.density[i];
+    for (direction k = 0; k < 3; ++k)
+    {
+        s[13 + k] = p.meanVelocity[i][k];
+        s[17 + k] = p.demUf[i][k];
+    }
+    s[16] = p.demK[i];
 }
 
 
@@ -104,6 +110,9 @@ void Foam::demCoupling::particleExchange::unpack
     p.omega[i] = vector(s[8], s[9], s[10]);
     p.diameter[i] = s[11];
     p.density[i] = s[12];
+    p.meanVelocity[i] = vector(s[13], s[14], s[15]);
+    p.demK[i] = s[16];
+    p.demUf[i] = vector(s[17], s[18], s[19]);
     p.cell[i] = -1;
     p.hostProc[i] = -1;
 }

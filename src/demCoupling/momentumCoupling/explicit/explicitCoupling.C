@@ -35,6 +35,7 @@ void Foam::demCoupling::momentumCouplingModels::explicitCoupling::assemble
     const voidFractionModel& voidFraction,
     const scalarList& K,
     const List<vector>& Uf,
+    const List<vector>& Up,
     const List<vector>& Fexplicit,
     volScalarField& Ksl,
     volVectorField& Us,
@@ -44,7 +45,7 @@ void Foam::demCoupling::momentumCouplingModels::explicitCoupling::assemble
     List<vector> F(particles.size());
     forAll(F, i)
     {
-        F[i] = K[i]*(Uf[i] - particles.velocity[i]) + Fexplicit[i];
+        F[i] = K[i]*(Uf[i] - Up[i]) + Fexplicit[i];
     }
 
     Ksl.primitiveFieldRef() = 0;

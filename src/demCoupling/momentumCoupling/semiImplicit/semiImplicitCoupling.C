@@ -36,6 +36,7 @@ void Foam::demCoupling::momentumCouplingModels::semiImplicitCoupling::assemble
     const voidFractionModel& voidFraction,
     const scalarList& K,
     const List<vector>&,
+    const List<vector>& Up,
     const List<vector>& Fexplicit,
     volScalarField& Ksl,
     volVectorField& Us,
@@ -45,7 +46,7 @@ void Foam::demCoupling::momentumCouplingModels::semiImplicitCoupling::assemble
     List<vector> Kv(particles.size());
     forAll(Kv, i)
     {
-        Kv[i] = K[i]*particles.velocity[i];
+        Kv[i] = K[i]*Up[i];
     }
 
     Ksl.primitiveFieldRef() = voidFraction.spread(K);
