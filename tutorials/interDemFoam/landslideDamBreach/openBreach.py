@@ -22,6 +22,7 @@ import json
 import math
 import os
 import re
+import sys
 
 from paraview import servermanager
 
@@ -47,12 +48,16 @@ def find_case():
     return os.path.abspath(max(runs, key=os.path.getmtime))
 
 
-def dem_step(case):
-    try:
-        text = open(os.path.join(case, 'DEM', 'in.case')).read()
-        return float(re.search(r'variable\s+demDt\s+index\s+(\S+)', text).group(1))
-    except (OSError, AttributeError, ValueError):
-        return 1e-4
+# the DEM step of a case: renderBreach.py's (this script's folder; ParaView's
+# --script may run it without __file__: then the case's parent folder, or the
+# tutorial of $INTERDEMFOAM_TUTORIALS)
+for _d in ([os.path.dirname(os.path.abspath(__file__))] if '__file__' in globals() else []) \
+        + [os.path.join(os.getcwd(), '..'),
+           os.path.join(os.environ.get('INTERDEMFOAM_TUTORIALS', '.'), 'landslideDamBreach')]:
+    if os.path.isfile(os.path.join(_d, 'renderBreach.py')):
+        sys.path.insert(0, os.path.abspath(_d))
+        break
+from renderBreach import dem_step  # noqa: E402
 
 
 def series(case, stem):

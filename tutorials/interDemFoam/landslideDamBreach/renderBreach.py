@@ -103,12 +103,15 @@ def gravity(case):
 
 
 def dem_step(case):
-    """DEM time step (s) from DEM/in.case (written by Allrun)"""
+    """DEM time step (s) from DEM/in.case (written by Allrun); no default:
+    the dump steps are times only with the step the run used"""
+    f = os.path.join(case, 'DEM', 'in.case')
     try:
-        text = open(os.path.join(case, 'DEM', 'in.case')).read()
+        text = open(f).read()
         return float(re.search(r'variable\s+demDt\s+index\s+(\S+)', text).group(1))
     except (OSError, AttributeError, ValueError):
-        return 1e-4
+        raise SystemExit('%s: no "variable demDt index <s>" (written by Allrun):'
+                         ' cannot tell the time of the DEM dumps' % f)
 
 
 def summary(case):
