@@ -125,3 +125,10 @@ set_tests_properties(case.damGrading PROPERTIES LABELS "case;damBreach" TIMEOUT 
 add_test(case.quietBed "bash" "cases/quietBed.sh")
 set_tests_properties(case.quietBed PROPERTIES LABELS "case;coupled;forces" TIMEOUT 600)
 
+# Bedload (issue 20): a small periodic channel, theta 0.2 (below this
+# laminar model's onset): no transport; theta 0.8: sustained transport, the
+# grains carry rho g S h, q* within x2 of the model's reference (1/10 of
+# Meyer-Peter-Mueller: docs/erosion.md); without fluid-particle forces
+# (negative control) the transport check must fail
+add_test(case.bedload "bash" "cases/bedload.sh")
+set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 300)

@@ -1,0 +1,406 @@
+#!/usr/bin/python3
+"""Bedload flux and bed shear stress of the bedload tutorial's runs.
+
+  bedloadAnalysis.py run <run>              <run>/bedload.summary (+ print)
+  bedloadAnalysis.py collect <out> <runs>   <out>.dat (theta qstar ...) and
+                                            <out>.png (q* against theta with
+                                            Meyer-Peter-Mueller, Wong-Parker)
+  bedloadAnalysis.py chart <png> <label>=<table.dat> ...
+                                            q* against theta of several
+                                            tables (sensitivity runs)
+  bedloadAnalysis.py profile <run>          where the fluid force acts:
+                                            the share of F_x on the grains
+                                            by height of their centres
+                                            (dumps of the averaging window)
+  bedloadAnalysis.py flagship              the estimate of theta in the
+                                            flagship's overtopping (docs/
+                                            erosion.md)
+  options: --noPlot (collect: table only)
+
+A run's records (Allrun, DEM/in.bedload, system/controlDict):
+  DEM/flux.dat           t, q_s (sum of V_p u_p,x over the mobile grains /
+                         (lx ly), m2/s), F_x on all grains, on the mobile
+                         ones (N), mobile grains faster than 0.05 m/s
+  postProcessing/flowVelocity/0/volFieldValue.dat
+                         t, mean U and alpha of the forced water layer
+Averaging window: the second half of the run, [T/2, T]. Statistically
+steady when the water's mean velocity changes by less than 5 % across it
+and the fluid force on the grains is within 10 % of rho g S h lx ly.
+
+  theta      = tau_b / ((rho_s - rho) g d), tau_b = rho g S h (imposed)
+  thetaGrain = <F_x> / (lx ly) / ((rho_s - rho) g d) (measured)
+  qstar      = <q_s> / sqrt((s - 1) g d^3), s = rho_s / rho
+Transport (sustained): q* > 1e-3 in each half of the window (q* = 1e-3 is
+Meyer-Peter-Mueller at theta = 0.0495, 5 % above its threshold 0.047).
+"""
+import math
+import os
+import sys
+
+RHO, RHOS, G, D = 1000.0, 2650.0, 9.81, 0.01
+S1 = RHOS/RHO - 1.0
+QREF = math.sqrt(S1*G*D**3)          # m2/s
+TAUREF = (RHOS - RHO)*G*D            # Pa
+QMIN = 1e-3                          # sustained-transport threshold on q*
+
+
+def mpm(theta):
+    return 8.0*max(theta - 0.047, 0.0)**1.5
+
+
+def wongParker(theta):
+    return 3.97*max(theta - 0.0495, 0.0)**1.5
+
+
+def settings(run):
+    s = {}
+    with open(os.path.join(run, 'system', 'caseSettings')) as f:
+        for line in f:
+            line = line.split('//')[0].strip()
+            if line.endswith(';') and len(line.split()) == 2:
+                k, v = line[:-1].split()
+                try:
+                    s[k] = float(v)
+                except ValueError:
+                    pass
+    for k in ('theta', 'forcing', 'depth', 'lx', 'ly'):
+        if k not in s:
+            sys.exit('%s: no %s in system/caseSettings' % (run, k))
+    return s
+
+
+def table(path, ncol):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith('#') or not line.strip():
+                continue
+            w = line.replace('(', ' ').replace(')', ' ').split()
+            try:
+                rows.append([float(x) for x in w[:ncol]])
+            except ValueError:
+                continue
+    return [r for r in rows if len(r) == ncol]
+
+
+def mean(v):
+    return sum(v)/len(v) if v else float('nan')
+
+
+def analyse(run):
+    s = settings(run)
+    area = s['lx']*s['ly']
+    flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
+    if len(flux) < 20:
+        sys.exit('%s: DEM/flux.dat has %d rows' % (run, len(flux)))
+    T = flux[-1][0]
+    t0 = 0.5*T
+    win = [r for r in flux if r[0] >= t0]
+    half1 = [r for r in win if r[0] < 0.75*T]
+    half2 = [r for r in win if r[0] >= 0.75*T]
+    qs = mean([r[1] for r in win])
+    # standard error from 5 block means (the flux is correlated in time)
+    nb = 5
+    blocks = [mean([r[1] for r in win[i*len(win)//nb:(i + 1)*len(win)//nb]])
+              for i in range(nb)]
+    qsErr = math.sqrt(sum((b - qs)**2 for b in blocks)/(nb*(nb - 1)))
+    q1 = mean([r[1] for r in half1])/QREF
+    q2 = mean([r[1] for r in half2])/QREF
+    Fx = mean([r[2] for r in win])
+    nMoving = mean([r[4] for r in win])
+    tauB = s['forcing']*s['depth']
+    vel = table(os.path.join(run, 'postProcessing', 'flowVelocity', '0',
+                             'volFieldValue.dat'), 5)
+    uw = [r for r in vel if r[0] >= t0]
+    U = mean([r[1] for r in uw])
+    n = max(len(uw)//10, 1)
+    U1, U2 = mean([r[1] for r in uw[:n]]), mean([r[1] for r in uw[-n:]])
+    out = {
+        'theta': s['theta'],
+        'qstar': qs/QREF,
+        'qstarErr': qsErr/QREF,
+        'qstarHalf1': q1,
+        'qstarHalf2': q2,
+        'transport': int(q1 > QMIN and q2 > QMIN),
+        'qstarMPM': mpm(s['theta']),
+        'qstarWongParker': wongParker(s['theta']),
+        'tauB': tauB,
+        'slope': s['forcing']/(RHO*G),
+        'thetaGrain': Fx/area/TAUREF,
+        'forceRatio': Fx/area/tauB,
+        'U': U,
+        'Udrift': (U2 - U1)/U if U else float('nan'),
+        'UoverUstar': U/math.sqrt(tauB/RHO),
+        'nMoving': nMoving,
+        'windowStart': t0,
+        'windowEnd': T,
+    }
+    out['steady'] = int(abs(out['Udrift']) < 0.05
+                        and abs(out['forceRatio'] - 1) < 0.1)
+    wt = os.path.join(run, 'wallTime')
+    if os.path.exists(wt):
+        out['wallTime'] = float(open(wt).read().split()[1])
+    with open(os.path.join(run, 'bedload.summary'), 'w') as f:
+        for k, v in out.items():
+            f.write('%-16s %.6g\n' % (k, v))
+    return out
+
+
+def readSummary(run):
+    out = {}
+    with open(os.path.join(run, 'bedload.summary')) as f:
+        for line in f:
+            k, v = line.split()
+            out[k] = float(v)
+    out['run'] = run
+    return out
+
+
+def collect(outName, runs, plot=True):
+    rows = []
+    for run in runs:
+        if not os.path.exists(os.path.join(run, 'bedload.summary')):
+            print('collect: %s has no bedload.summary (not finished?): '
+                  'left out' % run)
+            continue
+        rows.append(readSummary(run))
+    if not rows:
+        sys.exit('collect: no runs with a bedload.summary')
+    rows.sort(key=lambda r: r['theta'])
+    # onset: the first theta from which every run transports
+    # (a run that is not statistically steady measures no onset)
+    onset = None
+    for i, r in enumerate(rows):
+        if all(x['transport'] and x['steady'] for x in rows[i:]):
+            onset = r['theta']
+            break
+    unsteady = ['%g' % r['theta'] for r in rows if not r['steady']]
+    os.makedirs(os.path.dirname(outName) or '.', exist_ok=True)
+    cols = ['theta', 'qstar', 'qstarErr', 'transport', 'qstarMPM',
+            'qstarWongParker', 'thetaGrain', 'U', 'UoverUstar', 'Udrift',
+            'nMoving', 'steady', 'windowStart', 'windowEnd', 'wallTime']
+    with open(outName + '.dat', 'w') as f:
+        f.write('# Bedload flux against the Shields number '
+                '(tutorials/interDemFoam/bedload, bedloadAnalysis.py)\n')
+        f.write('# theta: imposed, tau_b = rho g S h; qstar = <q_s>/sqrt((s-1) g d^3) '
+                'over the window [windowStart, windowEnd] s; qstarErr: standard '
+                'error (5 blocks)\n')
+        f.write('# transport: q* > 1e-3 in both halves of the window; '
+                'thetaGrain: measured fluid force on the grains per bed area / '
+                '((rho_s - rho) g d); U: mean water velocity (m/s); Udrift: its '
+                'relative change across the window; nMoving: mobile grains '
+                'faster than 0.05 m/s; steady: |Udrift| < 5 %% and thetaGrain '
+                'within 10 %% of theta; wallTime: s\n')
+        f.write('# onset theta_c (first theta from which every run '
+                'transports, steady): %s\n' % (('%g' % onset) if onset else 'none'))
+        if unsteady:
+            f.write('# NOT statistically steady (no valid point): theta %s\n'
+                    % ' '.join(unsteady))
+        f.write('# ' + ' '.join(cols) + '\n')
+        for r in rows:
+            f.write(' '.join('%.5g' % r.get(c, float('nan')) for c in cols)
+                    + '\n')
+    print('%-8s %-10s %-9s %-9s %-9s %-10s %-6s %-6s %s' % (
+        'theta', 'qstar', '+-', 'MPM', 'WP', 'thetaGrain', 'U', 'U/u*',
+        'transport'))
+    for r in rows:
+        print('%-8.4g %-10.4g %-9.2g %-9.4g %-9.4g %-10.4g %-6.3g %-6.3g %d'
+              % (r['theta'], r['qstar'], r['qstarErr'], r['qstarMPM'],
+                 r['qstarWongParker'], r['thetaGrain'], r['U'],
+                 r['UoverUstar'], r['transport']))
+    print('onset theta_c = %s (criterion: q* > %g in both halves of the '
+          'window)' % (('%g' % onset) if onset else 'none', QMIN))
+    if unsteady:
+        print('NOT statistically steady (no valid point): theta %s'
+              % ' '.join(unsteady))
+    if not plot:
+        return
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 5))
+    th = [0.047 + i*0.001 for i in range(0, 1000)]
+    ax.plot(th, [mpm(t) for t in th], 'k-',
+            label=r'Meyer-Peter-M\"uller $8(\theta-0.047)^{1.5}$'
+            .replace(r'\"u', 'ü'))
+    ax.fill_between(th, [0.5*mpm(t) for t in th], [2*mpm(t) for t in th],
+                    color='0.85', label='MPM x/÷ 2')
+    ax.plot(th, [wongParker(t) for t in th], 'k--',
+            label=r'Wong-Parker $3.97(\theta-0.0495)^{1.5}$')
+    ax.axvspan(0.03, 0.06, color='tab:blue', alpha=0.12,
+               label=r'$\theta_c$ of coarse grains 0.03-0.06')
+    floor = 1e-4
+    pos = [r for r in rows if r['qstar'] > floor]
+    zero = [r for r in rows if r['qstar'] <= floor]
+    ax.errorbar([r['theta'] for r in pos], [r['qstar'] for r in pos],
+                yerr=[r['qstarErr'] for r in pos], fmt='o', color='tab:red',
+                label='interDemFoam (laminar, cells 2 d)')
+    if zero:
+        ax.plot([r['theta'] for r in zero], [floor*1.3]*len(zero), 'v',
+                color='tab:red', mfc='none',
+                label=r'interDemFoam: no transport ($q^* < 10^{-4}$)')
+    if onset:
+        ax.axvline(onset, color='tab:red', ls=':', label=r'measured onset')
+        below = [r['theta'] for r in rows if r['theta'] < onset]
+        if below:
+            # MPM's excess-stress law with this model's own threshold (the
+            # middle between the last theta without and the first with
+            # transport)
+            tc = 0.5*(below[-1] + onset)
+            ts = [tc + i*0.002 for i in range(0, 500)]
+            ax.plot(ts, [8*(t - tc)**1.5 for t in ts], ':', color='0.3',
+                    label=r'$8(\theta-%.3g)^{1.5}$ (MPM with this '
+                    r'$\theta_c$)' % tc)
+    ax.set_yscale('log')
+    ax.set_ylim(floor, 10)
+    ax.set_xlim(0, max(0.35, 1.05*rows[-1]['theta']))
+    ax.set_xlabel(r'Shields number $\theta = \tau_b/((\rho_s-\rho) g d)$')
+    ax.set_ylabel(r'$q^* = q_s/\sqrt{(s-1) g d^3}$')
+    ax.set_title('Bedload, d = 10 mm: %s' % os.path.basename(outName))
+    ax.legend(fontsize=7, loc='lower right')
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(outName + '.png', dpi=120)
+    print('wrote %s.dat, %s.png' % (outName, outName))
+
+
+def chart(outPng, tables):
+    """q* against theta of several tables (label=path.dat), with MPM and
+    Wong-Parker: the sensitivity runs of docs/erosion.md."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 5))
+    th = [0.047 + i*0.001 for i in range(0, 1000)]
+    ax.plot(th, [mpm(t) for t in th], 'k-', label='Meyer-Peter-Müller')
+    ax.fill_between(th, [0.5*mpm(t) for t in th], [2*mpm(t) for t in th],
+                    color='0.85', label='MPM x/÷ 2')
+    ax.plot(th, [wongParker(t) for t in th], 'k--', label='Wong-Parker')
+    ax.axvspan(0.03, 0.06, color='tab:blue', alpha=0.12,
+               label=r'$\theta_c$ 0.03-0.06')
+    floor = 1e-4
+    markers = 'osD^vP'
+    for k, spec in enumerate(tables):
+        label, path = spec.rsplit('=', 1)
+        rows = table(path, 2)
+        m = markers[k % len(markers)]
+        pos = [r for r in rows if r[1] > floor]
+        zero = [r for r in rows if r[1] <= floor]
+        line, = ax.plot([r[0] for r in pos], [r[1] for r in pos], m + '-',
+                        label=label)
+        if zero:
+            ax.plot([r[0] for r in zero], [floor*1.3]*len(zero), m,
+                    mfc='none', color=line.get_color())
+    ax.set_yscale('log')
+    ax.set_ylim(floor, 10)
+    ax.set_xlim(0, 0.85)
+    ax.set_xlabel(r'Shields number $\theta$')
+    ax.set_ylabel(r'$q^* = q_s/\sqrt{(s-1) g d^3}$')
+    ax.set_title(r'Bedload: what moves the onset (open: $q^* < 10^{-4}$)')
+    ax.legend(fontsize=7, loc='lower right')
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(outPng, dpi=120)
+    print('wrote %s' % outPng)
+
+
+def profile(run):
+    """Share of the fluid force along x by the height of the grain centres,
+    from the dumps post/grains.*.txt in the averaging window (columns id x
+    y z vx vy vz radius fx fz)."""
+    post = os.path.join(run, 'post')
+    files = sorted((int(f.split('.')[1]), f) for f in os.listdir(post)
+                   if f.startswith('grains.') and f.endswith('.txt'))
+    flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
+    T = flux[-1][0]
+    bins = {}
+    count = {}
+    nUsed = 0
+    zTop = []
+    for step, f in files:
+        if step*1e-4 < 0.5*T - 1e-9:
+            continue
+        rows = []
+        with open(os.path.join(post, f)) as fh:
+            lines = fh.readlines()
+        i = [k for k, l in enumerate(lines) if l.startswith('ITEM: ATOMS')]
+        if not i or len(lines[i[0]].split()) < 12:
+            continue
+        for l in lines[i[0] + 1:]:
+            w = l.split()
+            rows.append((float(w[3]), float(w[8])))
+        nUsed += 1
+        zs = sorted(z for z, fx in rows)
+        zTop.append(mean(zs[-max(len(zs)//20, 1):]))
+        for z, fx in rows:
+            b = int(z/0.005)
+            bins[b] = bins.get(b, 0.0) + fx
+            count[b] = count.get(b, 0) + 1
+    if not nUsed:
+        sys.exit('%s: no dumps with the fluid force in the window' % run)
+    total = sum(bins.values())
+    print('%s: %d dumps (t >= %.3g s); the 5 %% highest grain centres at '
+          'z = %.4f m' % (run, nUsed, 0.5*T, mean(zTop)))
+    print('%-16s %-8s %-10s %s' % ('z of centres mm', 'grains', 'share Fx',
+                                  'cumulative from the top'))
+    cum = 0.0
+    for b in sorted(bins, reverse=True):
+        cum += bins[b]/total
+        print('%-16s %-8.1f %-10.3f %.3f' % (
+            '%g-%g' % (5*b, 5*b + 5), count[b]/nUsed, bins[b]/total, cum))
+
+
+def flagship():
+    """Estimate of the Shields number in the flagship's overtopping
+    (landslideDamBreach, seed Tables 2-3): discharge per unit width q of
+    scenarios C1-C4 (5-20 l/s in the 0.5 m flume; the small slice scales Q
+    with its width, so q is the same), grains 20-40 mm (C: d50 30 mm).
+      crest (flat): critical depth h_c = (q^2/g)^(1/3), friction slope from
+        Manning-Strickler, n = d50^(1/6)/21.1, tau = rho g h S_f
+      downstream face (25 degrees): normal depth from Manning-Strickler,
+        q = h^(5/3) sin(beta)^(1/2)/n, tau = rho g h sin(beta)
+    An estimate: uniform flow on a 0.3 m face is not reached, and h < d."""
+    beta = math.radians(25.0)
+    print('%-9s %-8s %-9s %-9s %-9s %-9s %-22s' % (
+        'scenario', 'q m2/s', 'h_c m', 'thetaCrest', 'h_face m', 'tau Pa',
+        'theta face d=20/30/40 mm'))
+    for name, Q in (('C1', 0.005), ('C2', 0.01), ('C3', 0.015), ('C4', 0.02)):
+        q = Q/0.5
+        d50 = 0.03
+        n = d50**(1.0/6.0)/21.1
+        hc = (q*q/G)**(1.0/3.0)
+        Uc = q/hc
+        Sf = (n*Uc)**2/hc**(4.0/3.0)
+        thetaCrest = RHO*G*hc*Sf/((RHOS - RHO)*G*d50)
+        h = (q*n/math.sqrt(math.sin(beta)))**0.6
+        tau = RHO*G*h*math.sin(beta)
+        th = ['%.3f' % (tau/((RHOS - RHO)*G*d)) for d in (0.02, 0.03, 0.04)]
+        print('%-9s %-8.3g %-9.3g %-9.3f %-9.3g %-9.3g %s' % (
+            name, q, hc, thetaCrest, h, tau, ' / '.join(th)))
+
+
+if __name__ == '__main__':
+    args = [a for a in sys.argv[1:] if not a.startswith('--')]
+    plot = '--noPlot' not in sys.argv
+    if len(args) >= 2 and args[0] == 'run':
+        for run in args[1:]:
+            r = analyse(run)
+            print('%s: theta %.4g (grains: %.4g), q* %.4g +- %.2g '
+                  '(halves %.3g, %.3g; MPM %.4g, Wong-Parker %.4g), '
+                  'transport %d, U %.3g m/s (drift %.1f %%), steady %d, '
+                  'window %.3g-%.3g s'
+                  % (run, r['theta'], r['thetaGrain'], r['qstar'],
+                     r['qstarErr'], r['qstarHalf1'], r['qstarHalf2'],
+                     r['qstarMPM'], r['qstarWongParker'], r['transport'],
+                     r['U'], 100*r['Udrift'], r['steady'], r['windowStart'],
+                     r['windowEnd']))
+    elif len(args) >= 3 and args[0] == 'chart':
+        chart(args[1], args[2:])
+    elif len(args) == 2 and args[0] == 'profile':
+        profile(args[1])
+    elif args == ['flagship']:
+        flagship()
+    elif len(args) >= 3 and args[0] == 'collect':
+        collect(args[1], args[2:], plot)
+    else:
+        sys.exit(__doc__)
