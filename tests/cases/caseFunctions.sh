@@ -47,6 +47,22 @@ copyTutorial()
     cd "$runDir/$name" || fail "cannot enter $runDir/$name"
 }
 
+# Run the solver in the current case: runSolver serial | parallel
+# (parallel: decomposePar, mpirun -np 2 via runParallel, reconstructPar);
+# fails unless the run reached its end
+runSolver()
+{
+    if [ "$1" = parallel ]
+    then
+        runApplication decomposePar || return 1
+        runParallel interDemFoam || return 1
+        runApplication reconstructPar || return 1
+    else
+        runApplication interDemFoam || return 1
+    fi
+    grep -q "^End" log.interDemFoam
+}
+
 # Set a controlDict/fvSolution entry: setEntry <file> <key> <value>
 setEntry()
 {

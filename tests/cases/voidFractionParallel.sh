@@ -56,15 +56,7 @@ do
             cd "$d" || exit 1
             sed -i "s/^voidFraction .*/voidFraction      $model;/" constant/couplingProperties
             runApplication blockMesh || exit 1
-            if [ "$mode" = parallel ]
-            then
-                runApplication decomposePar || exit 1
-                runParallel interDemFoam || exit 1
-                runApplication reconstructPar || exit 1
-            else
-                runApplication interDemFoam || exit 1
-            fi
-            grep -q "^End" log.interDemFoam
+            runSolver "$mode"
         ) || fail "$d did not run (see $runDir/$name/$d/log.*)"
     done
 
