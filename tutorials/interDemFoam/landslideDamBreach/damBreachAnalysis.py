@@ -5,6 +5,16 @@
     damBreachAnalysis.py compare OUT CASE...  several runs side by side
     damBreachAnalysis.py grading BUILD [--out FILE] [--grains FILE]
                                               the grading of a poured dam
+    damBreachAnalysis.py ended CASE [--window 20] [--tolerance 0.005]
+                               [--maxTime 100]
+                                              exit 0 when the run should stop:
+                                              the breach has ended (or the
+                                              run has reached maxTime)
+    damBreachAnalysis.py matrix DIR SCALE CASE...
+                                              all eight scenarios: the matrix,
+                                              the findings, Figs. 8-11
+    damBreachAnalysis.py coarseness DIR SCALE CASE...
+                                              the variants' chart
 
 Reads the DEM dumps CASE/post/particles.<step>.txt and contacts.<step>.txt
 (DEM/in.dam writes them; step x demDt is the time, demDt the DEM step of
@@ -315,6 +325,48 @@ def analyse(case):
         print('%-52s %.6g' % (k, v))
 
     plot_case(case, table, centres, [profiles[i] for i in pick], wb)
+
+
+def height_at(case, times, span=2.0):
+    """The dam height H averaged over the dumps in [t - span, t] for each
+    t of times (one grain more or less on the crest moves H by its
+    diameter; the mean over a few dumps is the dam's height)."""
+    dumps = dump_files(case, 'particles')
+    edges = np.arange(0.0, FLUME_LENGTH + BIN/2, BIN)
+    out = []
+    for t in times:
+        hs = [surface_profile(read_dump(f), edges).max()
+              for td, f in dumps if t - span - 1e-9 <= td <= t + 1e-9]
+        out.append(np.mean(hs) if hs else np.nan)
+    return out
+
+
+def ended(case, window, tolerance, max_time):
+    """True when the run should stop: the dam height changed by less than
+    tolerance over the last window seconds (the breach has ended), or the
+    run has reached max_time (the longest run of its scale; said so)."""
+    dumps = dump_files(case, 'particles')
+    if not dumps:
+        sys.exit('damBreachAnalysis: no dumps in %s/post' % case)
+    t_end = dumps[-1][0]
+    if t_end < window + 2.0:
+        print('%s: %.1f s run, shorter than the %g s window: not ended'
+              % (case, t_end, window))
+        return False
+    h_before, h_end = height_at(case, [t_end - window, t_end])
+    change = abs(h_end - h_before)
+    done = change < tolerance
+    print('%s: dam height %.4f m at %.1f s, %.4f m at %.1f s: change %.1f mm '
+          '%s %.1f mm: %s' % (case, h_before, t_end - window, h_end, t_end,
+                              1000*change, '<' if done else '>=',
+                              1000*tolerance,
+                              'the breach has ended' if done
+                              else 'still changing'))
+    if not done and t_end >= max_time - 1e-6:
+        print('%s: NOT ENDED: the run has reached %g s, the longest run of '
+              'its scale; stopped and analysed as it is' % (case, max_time))
+        return True
+    return done
 
 
 def max_displacement(dumps):
@@ -640,6 +692,23 @@ if __name__ == '__main__':
         ap.add_argument('--scale')
         a = ap.parse_args(sys.argv[2:])
         sys.exit(0 if grading(a.build, a.out, a.grains, a.scale) else 1)
+    elif len(sys.argv) >= 3 and sys.argv[1] == 'ended':
+        import argparse
+        ap = argparse.ArgumentParser(prog='damBreachAnalysis.py ended')
+        ap.add_argument('case')
+        ap.add_argument('--window', type=float, default=20.0)
+        ap.add_argument('--tolerance', type=float, default=0.005)
+        ap.add_argument('--maxTime', type=float, default=100.0)
+        a = ap.parse_args(sys.argv[2:])
+        sys.exit(0 if ended(a.case, a.window, a.tolerance, a.maxTime)
+                 else 1)
+    elif len(sys.argv) >= 5 and sys.argv[1] == 'matrix':
+        import damBreachMatrix
+        sys.exit(damBreachMatrix.main(sys.argv[2], sys.argv[3], sys.argv[4:]))
+    elif len(sys.argv) >= 5 and sys.argv[1] == 'coarseness':
+        import damBreachMatrix
+        sys.exit(damBreachMatrix.coarseness(sys.argv[2], sys.argv[3],
+                                            sys.argv[4:]))
     elif len(sys.argv) >= 4 and sys.argv[1] == 'compare':
         compare(sys.argv[2], sys.argv[3:])
     elif len(sys.argv) == 2:
