@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Charts of the coupling benchmark (results.dat written by Allrun).
 
     plotScaling.py results.dat OUTDIR

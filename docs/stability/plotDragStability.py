@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Chart of dragStability.dat (runDragStability.sh): explicit vs implicit
 drag in the DEM steps against the coupling interval over the particle (or
 bed) response time. Writes dragStability.png."""

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Stability map of the void-fraction models (see runStabilityMap.sh).
 
 Reads runs/<model>-<dx/d>/log.interDemFoam; writes stabilityMap.dat and

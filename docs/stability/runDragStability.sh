@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Stability of the drag in the DEM steps, explicit (the force held over the
 # coupling interval dt) against implicit (K (u - v) in every DEM step,

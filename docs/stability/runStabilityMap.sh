@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Stability map of the void-fraction models: a settling cloud of 64 particles
 # of d = 1 mm (4 x 4 x 4 on a 1.5 d lattice, solid fraction 15 % inside the

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Bedload: the short version of tutorials/interDemFoam/bedload (docs/
 # erosion.md). A periodic channel 0.08 x 0.06 m (4 x 3 cells of 20 mm = 2 d),

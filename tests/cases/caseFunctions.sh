@@ -1,3 +1,6 @@
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # Shared helpers of the case tests (sourced). Each test runs in its own
 # folder under tests/run/ and exits 0 (pass), 1 (fail) or 77 (skipped).
 

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # The virtual sphere at the cell sizes that matter (seed Fig. 3, short): the
 # seed's 1 mm, 2500 kg/m3 particle settling in water, coupled to LIGGGHTS,

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Water volume sum(eps alpha V) in a closed two-phase box (dam break, no
 # particles) stays constant to 1e-6 relative: nothing enters or leaves, so

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Mis-set coupled cases stop with a clear message that names the file and
 # the keyword (never a crash, a hang or a silent default):

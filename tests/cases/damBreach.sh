@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # Landslide dam breach, tiny version of tutorials/interDemFoam/landslideDamBreach
 # (the whole pipeline, a few minutes): the dam poured by LIGGGHTS, scenario
 # C4 in the 0.1 m slice with the lake started 3 cm below the crest so that it

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # The landslide dam built with its grading (tutorials/interDemFoam/
 # landslideDamBreach, LIGGGHTS alone, about a minute on one core): both small
 # dams poured by ./Allrun -buildDam "C F", then checked here independently of

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # The two particle exchanges give the same results. The cell-sized particle
 # bed of voidFractionParallel (20 particles, d = dx = 4 mm, virtual sphere of

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Lift forces sampled on a mesh, coupled to LIGGGHTS (case tests/cases/
 # liftForces: water in a 12 x 12 x 20 mm box periodic in x and y, cells of

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # Packed bed, short version of tutorials/interDemFoam/packedBed: 825 glass
 # beads (d = 2 mm) poured into a 12 x 12 mm periodic column, held fixed,
 # water at a superficial 15 mm/s (Re = 30). The pressure gradient between

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Void fraction across a cyclic (periodic) patch, virtualSphere and divided:
 # one 4 mm particle (one cell) held still 0.5 mm from the cyclic face x = 0

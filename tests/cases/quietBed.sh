@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Quiet dense beds: the pressure at the plate under 825 glass beads (d = 2 mm)
 # poured into the 12 mm periodic column of the packedBed tutorial (cells 2 d,

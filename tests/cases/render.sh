@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # Pictures: a short coupled run (tests/cases/particleBed: 20 particles of
 # 4 mm in water, 3 steps) rendered with ParaView (bin/pvrender, the

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #------------------------------------------------------------------------------
 # One 1 mm, 2500 kg/m3 particle falls 0.05 m through air into water (seed
 # Table 1; cells 4 d, CFD 1e-4 s, DEM 1e-5 s) coupled to LIGGGHTS. Checked

@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # CTest fixture of the unit tests: tests/run/meshCase with its blockMesh
 . "${0%/*}/../cases/caseFunctions.sh"
 rm -rf "$runDir/meshCase"; mkdir -p "$runDir"

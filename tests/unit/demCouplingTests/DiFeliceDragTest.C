@@ -1,3 +1,6 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 // Di Felice drag (seed eq. 14, Cd squared, voidage eps^(2-chi)) against
 // values computed by hand (independent Python evaluation of the formulas,
 // 12 digits) and against the seed's single-particle benchmark.

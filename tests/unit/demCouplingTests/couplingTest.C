@@ -1,3 +1,6 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 // Locating particles, the pressure-gradient force, and the momentum
 // coupling's fluid sources, on the 5 x 5 x 5 test mesh (1 cm cube).
 

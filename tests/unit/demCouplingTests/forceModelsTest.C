@@ -1,3 +1,6 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 // The force models against values computed by hand (an independent Python
 // evaluation of each paper's formula, 12 digits, tests/unit/forceReference.py)
 // at four states (dilute/dense x low/high Re), and against their limits:

@@ -1,3 +1,6 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 // Run-time selection: a misspelled model name is an error that names the
 // keyword and lists the valid models; bad coefficients are rejected.
 

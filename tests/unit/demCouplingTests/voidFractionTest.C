@@ -1,3 +1,6 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 // Void-fraction models on a 5 x 5 x 5 mesh of a 1 cm cube: particle volume
 // is conserved, sum (1 - eps) V = sum V_p, and the floor is counted.
 

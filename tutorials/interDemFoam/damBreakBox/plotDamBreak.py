@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Dam break in a closed box: water volume and surge front against time.
 
 Reads the case's postProcessing tables and written alpha.water fields and

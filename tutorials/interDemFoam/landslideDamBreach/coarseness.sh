@@ -1,4 +1,7 @@
 #!/bin/bash
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 cd "${0%/*}" || exit                                # Run from this directory
 [ -n "$WM_PROJECT_DIR" ] || { . ../../../etc/bashrc || exit 1; }
 #------------------------------------------------------------------------------

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Landslide dam breach: the eight scenarios together (seed Table 2).
 
     damBreachAnalysis.py matrix DIR SCALE CASE...

@@ -1,3 +1,6 @@
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # ParaView state of a landslide-dam breach run, built by a script:
 #
 #     cd C2.small && paraview --script=../openBreach.py

@@ -1,4 +1,7 @@
 #!/usr/bin/env pvbatch
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Landslide dam breach in pictures (the longitudinal view of seed Fig. 6).
 
     pvrender renderBreach.py CASE [--noGif] [--grainMax 0.5] [--waterMax 1.5]

@@ -1,4 +1,7 @@
 #!/usr/bin/env python3
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Packed bed and fluidization against Ergun (1952) and Wen & Yu (1966).
 
   plotPackedBed.py fixed RUN...   pressure gradient in the bed of each fixed-

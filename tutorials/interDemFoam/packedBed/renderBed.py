@@ -1,4 +1,7 @@
 #!/usr/bin/env pvbatch
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Pictures of the packed bed (ParaView, pvbatch): the grains as spheres of
 their true diameter coloured by speed, and the fluid volume fraction
 (voidfraction) on the vertical mid-plane, at a few write times.

@@ -1,4 +1,7 @@
 #!/usr/bin/python3
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Seed Fig. 3 study: terminal settling velocity of a 1 mm particle against
 the cell size, per void-fraction model, and its cost.
 

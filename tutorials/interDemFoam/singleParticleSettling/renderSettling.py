@@ -1,4 +1,7 @@
 #!/usr/bin/env pvbatch
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Pictures of a coupled case seen from the side (ParaView, pvbatch).
 
     pvrender renderSettling.py [CASE] [--frames 4] [--window 0.04]

@@ -1,3 +1,6 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "pressureGradient.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
