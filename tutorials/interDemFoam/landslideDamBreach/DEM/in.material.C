@@ -1,6 +1,3 @@
-// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
-// Copyright (C) 2026 the interDemFoam authors
-// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # Material C: coarse, nearly uniform gravel ("unsize coarse-grained"),
 # d = 20, 30, 40 mm, mass fractions 0.3, 0.4, 0.3; density 2650 kg/m3
 fix             p1 all particletemplate/sphere 15485863 atom_type 1 density constant 2650 radius constant 0.010
