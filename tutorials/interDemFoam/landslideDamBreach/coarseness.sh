@@ -6,9 +6,9 @@ cd "${0%/*}" || exit                                # Run from this directory
 [ -n "$WM_PROJECT_DIR" ] || { . ../../../etc/bashrc || exit 1; }
 #------------------------------------------------------------------------------
 # How coarse can the scene be? Variants of C2 (and F2) at the small scale,
-# two at a time, each run as long as the tutorial's own C2/F2 of the matrix
-# (./Allrun -scenario all, which must have run first), then one chart of
-# residual height and overtopping time against wall time:
+# two at a time, each run until its breach has ended as the tutorial's runs
+# (Allrun), then one chart of residual height and overtopping time against
+# wall time, with the tutorial's own C2 and F2 (./Allrun -scenario all):
 # results/coarseness.small.png and .dat (damBreachAnalysis.py coarseness).
 #
 #   ./coarseness.sh                       every variant below
@@ -16,6 +16,8 @@ cd "${0%/*}" || exit                                # Run from this directory
 #
 #   dry      C2, the lake filled by the river from a dry bed (the tutorial
 #            starts it half full)
+#   smooth   C2 on a smooth bed (Table 3's particle-geometry friction 0.54
+#            and rolling friction 0.12; the tutorial's bed is rough)
 #   w02      C2, a slice 0.2 m wide (4 cells across) instead of 0.1 m
 #   divided  C2, the divided void-fraction model instead of the virtual sphere
 #   centre   C2, the centre void-fraction model
@@ -23,33 +25,27 @@ cd "${0%/*}" || exit                                # Run from this directory
 #   Fcoarse  F2 with a coarser grading (15-40 mm, DEM/in.material.Fcoarse)
 #   cell25   C2, 25 mm cells instead of 50 mm
 #------------------------------------------------------------------------------
-variants=${*:-dry w02 divided centre lift Fcoarse cell25}
-for c in C2.small F2.small
-do
-    [ -f $c/damBreach.summary ] \
-        || { echo "coarseness.sh: no $c/damBreach.summary: run ./Allrun -scenario all first"; exit 1; }
-done
-endOf() { awk '/^end time/ {print $NF}' "$1"/damBreach.summary; }
-endC=$(endOf C2.small)
-endF=$(endOf F2.small)
+all="dry smooth w02 divided centre lift Fcoarse cell25"
+variants=${*:-$all}
 
 options()
 {
     case "$1" in
-        dry)     echo "-scenario C2 -endTime $endC -lakeLevel \"\"" ;;
-        w02)     echo "-scenario C2 -endTime $endC -width 0.2" ;;
-        divided) echo "-scenario C2 -endTime $endC -voidFraction divided" ;;
-        centre)  echo "-scenario C2 -endTime $endC -voidFraction centre" ;;
-        lift)    echo "-scenario C2 -endTime $endC -forces \"DiFeliceDrag pressureGradient SaffmanLift MagnusLift\"" ;;
-        Fcoarse) echo "-scenario F2 -endTime $endF -grading Fcoarse" ;;
-        cell25)  echo "-scenario C2 -endTime $endC -cellSize 0.025" ;;
+        dry)     echo "-scenario C2 -lakeLevel \"\"" ;;
+        smooth)  echo "-scenario C2 -bed smooth" ;;
+        w02)     echo "-scenario C2 -width 0.2" ;;
+        divided) echo "-scenario C2 -voidFraction divided" ;;
+        centre)  echo "-scenario C2 -voidFraction centre" ;;
+        lift)    echo "-scenario C2 -forces \"DiFeliceDrag pressureGradient SaffmanLift MagnusLift\"" ;;
+        Fcoarse) echo "-scenario F2 -grading Fcoarse" ;;
+        cell25)  echo "-scenario C2 -cellSize 0.025" ;;
         *) return 1 ;;
     esac
 }
 for v in $variants
 do
     options "$v" > /dev/null \
-        || { echo "coarseness.sh: unknown variant '$v' (dry w02 divided centre lift Fcoarse cell25)"; exit 1; }
+        || { echo "coarseness.sh: unknown variant '$v' ($all)"; exit 1; }
 done
 
 # the dams of the variants first (one at a time: they share results/)
@@ -76,8 +72,13 @@ do
     running=$((running + 1))
 done
 wait
-cases="C2.small F2.small"
-for v in $variants
+cases=""
+for c in C2.small F2.small
+do
+    [ -f $c/damBreach.summary ] && cases="$cases $c" \
+        || echo "coarseness.sh: no $c/damBreach.summary (./Allrun -scenario all): the chart goes without it"
+done
+for v in $all
 do
     c=$(ls -d ./*.small.$v 2>/dev/null | head -1)
     [ -n "$c" ] && [ -f "$c/damBreach.summary" ] && cases="$cases ${c#./}"
