@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "demEngine.H"
 #include "demRestartFile.H"
+#include "demScriptCheck.H"
 #include "IFstream.H"
 #include "Pstream.H"
 #include "mathematicalConstants.H"
@@ -57,23 +58,6 @@ struct fpeTrapsOff
 
 
 // Whitespace-separated words of one script line (comments removed)
-Foam::wordList scriptWords(const std::string& line)
-{
-    std::string s(line.substr(0, line.find('#')));
-    Foam::DynamicList<Foam::word> words;
-    std::size_t pos = 0;
-    while (true)
-    {
-        const std::size_t b = s.find_first_not_of(" \t\r", pos);
-        if (b == std::string::npos) break;
-        const std::size_t e = s.find_first_of(" \t\r", b);
-        words.append(Foam::word(s.substr(b, e - b), false));
-        if (e == std::string::npos) break;
-        pos = e;
-    }
-    return Foam::wordList(std::move(words));
-}
-
 MPI_Comm solverComm()
 {
     return Foam::Pstream::parRun() ? MPI_COMM_WORLD : MPI_COMM_SELF;
@@ -107,159 +91,6 @@ void Foam::demCoupling::demEngine::command
     else
     {
         lmp_->input->one(cmd.c_str());
-    }
-}
-
-
-void Foam::demCoupling::demEngine::scanScript
-(
-    const fileName& script,
-    const fileName& caseDir,
-    const dictionary& dict,
-    bool& haveCouple,
-    bool& haveForce,
-    const label depth,
-    const fileName& parent,
-    const label parentLine
-)
-{
-    IFstream is(script);
-    if (!is.good())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Cannot open the DEM script " << script << nl;
-        if (parent.empty())
-        {
-            FatalIOError
-                << "    (keyword demScript, or demRestartScript when"
-                << " restarting; relative to the case directory)";
-        }
-        else
-        {
-            FatalIOError
-                << "    (include on line " << parentLine << " of " << parent
-                << "; paths are relative to the case directory)";
-        }
-        FatalIOError << exit(FatalIOError);
-    }
-    if (depth > 16)
-    {
-        FatalIOErrorInFunction(dict)
-            << "DEM script " << script << ": 'include' nested deeper than 16"
-            << " levels (a file that includes itself?)"
-            << exit(FatalIOError);
-    }
-
-    // Join LIGGGHTS continuation lines ('&' at the end) while reading
-    std::string line, joined;
-    label lineNo = 0;
-    while (is.getLine(line))
-    {
-        ++lineNo;
-        const auto amp = line.find_last_not_of(" \t\r");
-        if (amp != std::string::npos && line[amp] == '&')
-        {
-            joined += line.substr(0, amp) + ' ';
-            continue;
-        }
-        joined += line;
-        const wordList w(scriptWords(joined));
-        joined.clear();
-
-        if (w.size() == 2 && w[0] == "include")
-        {
-            // A path with LIGGGHTS variables (${dir}/in.x) is left to the
-            // check on the live instance
-            if (w[1].find('$') == std::string::npos)
-            {
-                fileName inc(w[1]);
-                if (!inc.isAbsolute())
-                {
-                    inc = caseDir/inc;
-                }
-                scanScript
-                (
-                    inc, caseDir, dict, haveCouple, haveForce, depth + 1,
-                    script, lineNo
-                );
-            }
-            continue;
-        }
-        if (w.size() < 4 || w[0] != "fix")
-        {
-            continue;
-        }
-        if (w[3] == "couple/cfd")
-        {
-            haveCouple = true;
-            // fix <id> <group> couple/cfd couple_every <N> mpi
-            if
-            (
-                w.size() < 7
-             || (w[4] != "couple_every" && w[4] != "every")
-             || w[6] != "mpi"
-            )
-            {
-                FatalIOErrorInFunction(dict)
-                    << "DEM script " << script << " line " << lineNo
-                    << ": expected" << nl
-                    << "    fix <id> all couple/cfd couple_every <N> mpi" << nl
-                    << "(interDemFoam exchanges data through MPI in one"
-                    << " process; the 'file' coupling is not supported)"
-                    << exit(FatalIOError);
-            }
-            if (!readLabel(w[5], coupleEvery_) || coupleEvery_ < 1)
-            {
-                FatalIOErrorInFunction(dict)
-                    << "DEM script " << script << " line " << lineNo
-                    << ": couple_every must be a whole number >= 1 written"
-                    << " out (not a variable), found '" << w[5] << "'"
-                    << exit(FatalIOError);
-            }
-        }
-        else if
-        (
-            w[3] == "couple/cfd/force" || w[3] == "couple/cfd/dragforce"
-         || w[3] == "couple/cfd/force/implicit"
-        )
-        {
-            haveForce = true;
-        }
-        else if (w[3].compare(0, 7, "insert/") == 0)
-        {
-            inserts_ = true;
-        }
-    }
-}
-
-
-void Foam::demCoupling::demEngine::checkScript
-(
-    const dictionary& dict,
-    const fileName& caseDir
-)
-{
-    bool haveCouple = false;
-    bool haveForce = false;
-    coupleEvery_ = -1;
-
-    scanScript
-    (
-        script_, caseDir, dict, haveCouple, haveForce, 0
-    );
-
-    if (!haveCouple || !haveForce)
-    {
-        FatalIOErrorInFunction(dict)
-            << "The DEM script " << script_ << " lacks the coupling fix"
-            << (haveCouple ? "" : " 'couple/cfd'")
-            << (haveCouple || haveForce ? "" : " and the fix")
-            << (haveForce ? "" : " 'couple/cfd/force'") << "." << nl
-            << "    It must hold both:" << nl
-            << "    fix cfd  all couple/cfd couple_every <N> mpi" << nl
-            << "    fix cfd2 all couple/cfd/force" << nl
-            << "    with N = deltaT (CFD) / timestep (DEM)."
-            << exit(FatalIOError);
     }
 }
 
@@ -346,7 +177,11 @@ Foam::demCoupling::demEngine::demEngine
         script_ = caseDir/script_;
     }
 
-    checkScript(couplingDict, caseDir);
+    {
+        const demScriptCheck check(script_, caseDir, couplingDict);
+        coupleEvery_ = check.coupleEvery();
+        inserts_ = check.inserts();
+    }
 
     int mpiUp = 0;
     MPI_Initialized(&mpiUp);
