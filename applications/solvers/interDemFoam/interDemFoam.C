@@ -31,6 +31,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "particleCloud.H"
+#include "twoPhaseFluidView.H"
 #include "demRestartFile.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
@@ -136,7 +137,7 @@ int main(int argc, char *argv[])
             }
         }
 
-        particles.checkFinite();
+        particles.checkFinite(runTime);
 
         // the fields; a failed write (full disk) says so
         demCoupling::demRestartFile::writeFluid(runTime);

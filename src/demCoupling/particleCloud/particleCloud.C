@@ -3,19 +3,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "particleCloud.H"
 #include "fvcFlux.H"
-#include "immiscibleIncompressibleTwoPhaseMixture.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
 #include "wallPolyPatch.H"
 #include "fvcGrad.H"
-#include "fvcReconstruct.H"
-#include "fvcCurl.H"
 #include "fvcDiv.H"
-#include "fvcLaplacian.H"
 #include "surfaceFields.H"
 #include "Time.H"
-#include "passiveParticleCloud.H"
-#include "IOField.H"
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -102,75 +96,6 @@ Foam::wordList voidfractionPatchTypes(const Foam::fvMesh& mesh)
     return types;
 }
 
-// Levenshtein distance, for "did you mean"
-Foam::label editDistance(const std::string& a, const std::string& b)
-{
-    std::vector<Foam::label> prev(b.size() + 1), cur(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i)
-    {
-        cur[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j)
-        {
-            const Foam::label sub = prev[j - 1] + (a[i - 1] != b[j - 1]);
-            cur[j] = std::min(std::min(prev[j] + 1, cur[j - 1] + 1), sub);
-        }
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
-
-// Every keyword of couplingProperties must be one this code reads: a typo
-// ("minVoidfraction") would otherwise fall back to a default or be
-// ignored without a word
-void checkKeywords(const Foam::dictionary& dict)
-{
-    using namespace Foam;
-    using namespace Foam::demCoupling;
-
-    wordList known
-    ({
-        "demScript", "demRestartScript", "voidFraction", "minVoidFraction",
-        "forces", "momentumCoupling", "outsideParticles", "exchange",
-        "demDrag"
-    });
-    for (const word& m : voidFractionModel::dictionaryConstructorTablePtr_->sortedToc())
-    {
-        known.append(m + "Coeffs");
-    }
-    for (const word& m : forceModel::dictionaryConstructorTablePtr_->sortedToc())
-    {
-        known.append(m + "Coeffs");
-    }
-
-    for (const word& key : dict.toc())
-    {
-        if (key == "FoamFile" || known.found(key))
-        {
-            continue;
-        }
-        word best;
-        label bestDistance = labelMax;
-        for (const word& k : known)
-        {
-            const label d = editDistance(key, k);
-            if (d < bestDistance)
-            {
-                bestDistance = d;
-                best = k;
-            }
-        }
-        FatalIOErrorInFunction(dict)
-            << "Unknown keyword '" << key << "' in " << dict.name() << nl;
-        if (bestDistance <= max(label(2), label(key.size()/3)))
-        {
-            FatalIOError << "    Did you mean '" << best << "'?" << nl;
-        }
-        FatalIOError
-            << "    Allowed: " << flatOutput(known) << exit(FatalIOError);
-    }
-}
-
 } // End anonymous namespace
 
 
@@ -179,26 +104,21 @@ void checkKeywords(const Foam::dictionary& dict)
 Foam::demCoupling::particleCloud::particleCloud
 (
     const fvMesh& mesh,
-    const volVectorField& U,
-    const volScalarField& rho,
-    const immiscibleIncompressibleTwoPhaseMixture& mixture
+    const fluidView& fluid
 )
 :
     mesh_(mesh),
-    U_(U),
-    rho_(rho),
-    mixture_(mixture),
+    fluid_(fluid),
     couplingDict_(readCouplingDict(mesh)),
+    controls_(),
     engine_(),
     exchange_(),
     locator_(),
     voidFraction_(),
     forces_(),
+    sampler_(),
     momentumCoupling_(),
-    adjustTimeStep_
-    (
-        mesh.time().controlDict().getOrDefault<Switch>("adjustTimeStep", false)
-    ),
+    diagnostics_(),
     voidfraction_
     (
         IOobject
@@ -240,27 +160,19 @@ Foam::demCoupling::particleCloud::particleCloud
     ),
     owned_(),
     particles_(),
+    states_(),
     fluidForce_(),
     K_(),
     reactingForce_(),
     Uf_(),
+    demK_(),
+    demForce_(),
+    forcesSent_(false),
     demSteps_(0),
     lastDemCount_(0),
-    outsidePolicy_("ignore"),
-
     deletedNow_(0),
     deletedTotal_(0),
-    cellsPerStep_(0),
-    clock_(),
-    demTime_(0),
-    couplingTime_(0),
-    locateTime_(0),
-    voidFractionTime_(0),
-    forcesTime_(0),
-    particleSteps_(0),
-    exchangeStart_(0),
-    startTime_(clock_.elapsedTime()),
-    lastProgress_(startTime_)
+    cellsPerStep_(0)
 {
     // Keep the previous time level of eps for d(eps)/dt
     voidfraction_.oldTime();
@@ -268,8 +180,8 @@ Foam::demCoupling::particleCloud::particleCloud
     if (!active())
     {
         Info<< "No constant/couplingProperties: no particles, the fluid"
-            << " volume fraction stays 1 (plain two-phase VoF)." << nl
-            << endl;
+            << " volume fraction stays 1 (the solver without particles)."
+            << nl << endl;
         return;
     }
 
@@ -288,74 +200,18 @@ Foam::demCoupling::particleCloud::particleCloud
     Info<< "Coupling to the DEM (" << couplingDict_().objectPath() << ")"
         << endl;
 
-    checkKeywords(dict);
-
-    outsidePolicy_ = dict.getOrDefault<word>("outsideParticles", "ignore");
-    if (outsidePolicy_ != "ignore" && outsidePolicy_ != "delete")
-    {
-        FatalIOErrorInFunction(dict)
-            << "outsideParticles '" << outsidePolicy_ << "' in "
-            << dict.name() << ": allowed are ignore (no fluid force on a"
-            << " particle outside the fluid mesh, counted) and delete"
-            << " (removed from the DEM)" << exit(FatalIOError);
-    }
+    controls_.reset(new couplingControls(dict, mesh.time()));
 
     // Models first (cheap, and their input errors come before the DEM's)
     voidFraction_ = voidFractionModel::New(dict, mesh);
     forces_ = forceModel::NewList(dict);
+    sampler_.reset(new fluidSampler(forces_));
     momentumCoupling_ = momentumCouplingModel::New(dict, mesh);
     exchange_ = particleExchange::New(dict, mesh);
     locator_.reset(new particleLocator(mesh));
 
     engine_.reset(new demEngine(dict, mesh.time()));
-
-    // How the DEM applies the drag (see docs/forces.md, "Quiet dense beds")
-    const word demDrag(dict.getOrDefault<word>("demDrag", "implicit"));
-    if (demDrag != "implicit" && demDrag != "explicit")
-    {
-        FatalIOErrorInFunction(dict)
-            << "demDrag '" << demDrag << "' in " << dict.name() << ": allowed"
-            << " are implicit (the drag K (u - v) applied in every DEM step"
-            << " with the particle's velocity of that step; the default) and"
-            << " explicit (the whole force held over the coupling interval)"
-            << exit(FatalIOError);
-    }
-    implicitDemDrag_ = demDrag == "implicit";
-    if (implicitDemDrag_ && !engine_->implicitDrag())
-    {
-        FatalIOErrorInFunction(dict)
-            << "demDrag implicit (" << (dict.found("demDrag") ? "set" : "the"
-            " default") << " in " << dict.name() << ") needs the fix" << nl
-            << "    fix cfd2 all couple/cfd/force/implicit" << nl
-            << "in the DEM script " << engine_->script() << " instead of"
-            << " couple/cfd/force; or set demDrag explicit."
-            << exit(FatalIOError);
-    }
-    Info<< "DEM drag: " << demDrag << endl;
-
-    // The DEM box must hold the whole fluid mesh: where it does not, a
-    // particle leaves the DEM while still in the fluid
-    {
-        const boundBox demBox(engine_->box());
-        const boundBox& meshBox = mesh.bounds();
-        const scalar tol = 1e-6*mag(meshBox.span());
-        if
-        (
-            cmptMin(meshBox.min() - demBox.min()) < -tol
-         || cmptMax(meshBox.max() - demBox.max()) > tol
-        )
-        {
-            FatalIOErrorInFunction(dict)
-                << "The DEM box of " << engine_->script() << ", "
-                << demBox.min() << " to " << demBox.max() << ", does not"
-                << " cover the fluid mesh, " << meshBox.min() << " to "
-                << meshBox.max() << "." << nl
-                << "    Enlarge the region of create_box in the DEM script"
-                << " (it may be larger than the mesh, not smaller)."
-                << exit(FatalIOError);
-        }
-    }
-    engine_->checkTimeStep();
+    controls_->checkDem(engine_(), mesh);
 
     // The particles' volume from the start, so that time 0 sees it
     updateParticles();
@@ -363,13 +219,26 @@ Foam::demCoupling::particleCloud::particleCloud
     lastDemCount_ = exchange_->nTotal();
 
     // The coupling split counts the coupling steps only
-    locateTime_ = 0;
-    voidFractionTime_ = 0;
-    exchangeStart_ = exchange_->seconds();
+    diagnostics_.startCouplingSplit(exchange_->seconds());
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::demCoupling::particleCloud::advanceDem()
+{
+    // In parallel the DEM phase ends when its slowest rank is done: the
+    // wait for it is DEM time (LIGGGHTS's load balance), not time the
+    // exchange that follows spends in its collectives
+    const scalar t0 = diagnostics_.now();
+    engine_->advance(demSteps_);
+    if (Pstream::parRun())
+    {
+        MPI_Barrier(MPI_COMM_WORLD);
+    }
+    diagnostics_.addDem(diagnostics_.now() - t0);
+}
+
 
 void Foam::demCoupling::particleCloud::updateParticles()
 {
@@ -404,16 +273,77 @@ void Foam::demCoupling::particleCloud::updateParticles()
         particles_
     );
 
-    scalar t0 = clock_.elapsedTime();
-    scalar x0 = exchange_->seconds();
+    const scalar t0 = diagnostics_.now();
+    const scalar x0 = exchange_->seconds();
     locator_->locate(particles_);
-    scalar t1 = clock_.elapsedTime();
-    scalar x1 = exchange_->seconds();
-    locateTime_ += (t1 - t0) - (x1 - x0);
+    const scalar t1 = diagnostics_.now();
+    const scalar x1 = exchange_->seconds();
+    diagnostics_.addLocate((t1 - t0) - (x1 - x0));
 
     voidFraction_->update(particles_, voidfraction_);
-    voidFractionTime_ +=
-        (clock_.elapsedTime() - t1) - (exchange_->seconds() - x1);
+    diagnostics_.addVoidFraction
+    (
+        (diagnostics_.now() - t1) - (exchange_->seconds() - x1)
+    );
+}
+
+
+void Foam::demCoupling::particleCloud::deleteOutsideParticles()
+{
+    deletedNow_ = 0;
+    if (!controls_->deleteOutside() || !locator_->lost())
+    {
+        return;
+    }
+    // Each lost particle is counted by one rank: all ranks' lists
+    List<labelList> perRank(Pstream::nProcs());
+    perRank[Pstream::myProcNo()] = locator_->lostTags();
+    Pstream::gatherList(perRank);
+    Pstream::scatterList(perRank);
+    DynamicList<label> tags;
+    for (const labelList& l : perRank)
+    {
+        tags.append(l);
+    }
+    engine_->deleteParticles(tags);
+    deletedNow_ = tags.size();
+    deletedTotal_ += deletedNow_;
+    // not a loss LIGGGHTS made: keep it out of the "left the DEM" count
+    lastDemCount_ -= deletedNow_;
+    updateParticles();
+}
+
+
+Foam::scalar Foam::demCoupling::particleCloud::maxCellsPerStep() const
+{
+    // Above one cell per coupling step the fluid a particle sees jumps
+    // (and so do its forces): the largest (|u| dt)^3/V_cell, one cube root
+    // (a cube root per particle was a tenth of the coupling time)
+    const scalarField& V = mesh_.V();
+    const scalar dt = mesh_.time().deltaTValue();
+    scalar maxCube = 0;
+    forAll(particles_.cell, i)
+    {
+        const label c = particles_.cell[i];
+        if (c >= 0 && particles_.hostProc[i] == Pstream::myProcNo())
+        {
+            maxCube = max
+            (
+                maxCube,
+                pow3(mag(particles_.velocity[i])*dt)/V[c]
+            );
+        }
+    }
+    return cbrt(returnReduce(maxCube, maxOp<scalar>()));
+}
+
+
+void Foam::demCoupling::particleCloud::sampleFluid()
+{
+    states_ = sampler_->sample
+    (
+        voidFraction_(), fluid_, voidfraction_, particles_
+    );
 }
 
 
@@ -426,125 +356,24 @@ void Foam::demCoupling::particleCloud::computeForces()
     K_.setSize(n);
     reactingForce_.setSize(n);
     Uf_.setSize(n);
-    fluidForce_ = Zero;
-    K_ = 0;
     demK_.setSize(n);
     demForce_.setSize(n);
-    demK_ = 0;
-    demForce_ = Zero;
+    fluidForce_ = Zero;
+    K_ = 0;
     reactingForce_ = Zero;
     Uf_ = Zero;
+    demK_ = 0;
+    demForce_ = Zero;
 
-    const volScalarField& p = mesh_.lookupObject<volScalarField>("p");
-    const volScalarField mu(mixture_.mu());
-
-    // grad(p) without the capillary pressure jump (see Description)
-    const volVectorField gradP
-    (
-        "gradPParticles",
-        fvc::grad(p)
-      - fvc::reconstruct(mixture_.surfaceTensionForce()*mesh_.magSf())
-    );
-
-
-    // Fields only some force models need
-    bool needVorticity = false;
-    bool needViscousStress = false;
-    for (const forceModel& model : forces_)
-    {
-        needVorticity = needVorticity || model.needsVorticity();
-        needViscousStress = needViscousStress || model.needsViscousStress();
-    }
-
-    // The fluid each particle sees: the weighted average over its cells
-    // (through the model's kernel), summed over the processors that hold
-    // some of them: U 3, eps, rho, mu, grad(p) 3 [, curl(U) 3, div(tau) 3]
-    const List<vector> Ui(vf.sample(U_));
-    const scalarList epsi(vf.sample(voidfraction_));
-    const scalarList rhoi(vf.sample(rho_));
-    const scalarList mui(vf.sample(mu));
-    const List<vector> gradPi(vf.sample(gradP));
-
-    List<vector> vorticityi;
-    if (needVorticity)
-    {
-        vorticityi = vf.sample(volVectorField("curlU", fvc::curl(U_)));
-    }
-
-    List<vector> divTaui;
-    if (needViscousStress)
-    {
-        // tau = mu (grad(U) + grad(U)^T - 2/3 div(U) I)
-        const volTensorField gradU(fvc::grad(U_));
-        divTaui = vf.sample
-        (
-            volVectorField
-            (
-                "divTau",
-                fvc::laplacian(mu, U_) + fvc::div(mu*dev2(T(gradU)))
-            )
-        );
-    }
-
-    const label nq =
-        9 + (needVorticity ? 3 : 0) + (needViscousStress ? 3 : 0);
-    const label iVorticity = 9;
-    const label iDivTau = needVorticity ? 12 : 9;
-
-    scalarList sums(nq*n, Zero);
-    forAll(particles_.position, i)
-    {
-        scalar* q = &sums[nq*i];
-        q[0] = Ui[i].x(); q[1] = Ui[i].y(); q[2] = Ui[i].z();
-        q[3] = epsi[i];
-        q[4] = rhoi[i];
-        q[5] = mui[i];
-        q[6] = gradPi[i].x(); q[7] = gradPi[i].y(); q[8] = gradPi[i].z();
-        if (needVorticity)
-        {
-            for (direction c = 0; c < 3; ++c)
-            {
-                q[iVorticity + c] = vorticityi[i][c];
-            }
-        }
-        if (needViscousStress)
-        {
-            for (direction c = 0; c < 3; ++c)
-            {
-                q[iDivTau + c] = divTaui[i][c];
-            }
-        }
-    }
-    particles_.combine(sums, nq, combineOp::sum);
-
-    // Forces: every processor that holds cells of a particle computes the
-    // same force from the same (reduced) fluid state
-    forAll(particles_.position, i)
+    // Every processor that holds cells of a particle computes the same
+    // force from the same (combined) fluid state
+    forAll(states_, i)
     {
         if (vf.cells(i).empty())
         {
             continue;
         }
-        const scalar* q = &sums[nq*i];
-        particleFluidState s;
-        s.Up = particles_.velocity[i];
-        s.omega = particles_.omega[i];
-        s.d = particles_.diameter[i];
-        s.rhoP = particles_.density[i];
-        s.Uf = vector(q[0], q[1], q[2]);
-        s.eps = q[3];
-        s.rhoF = q[4];
-        s.muF = q[5];
-        s.gradP = vector(q[6], q[7], q[8]);
-        if (needVorticity)
-        {
-            s.vorticity =
-                vector(q[iVorticity], q[iVorticity + 1], q[iVorticity + 2]);
-        }
-        if (needViscousStress)
-        {
-            s.divTau = vector(q[iDivTau], q[iDivTau + 1], q[iDivTau + 2]);
-        }
+        const particleFluidState& s = states_[i];
         Uf_[i] = s.Uf;
 
         for (const forceModel& model : forces_)
@@ -575,7 +404,11 @@ void Foam::demCoupling::particleCloud::computeForces()
                 << exit(FatalError);
         }
     }
+}
 
+
+void Foam::demCoupling::particleCloud::assembleSources()
+{
     // The solid volume flux of the interval just run
     {
         List<vector> Vv(particles_.size());
@@ -583,7 +416,7 @@ void Foam::demCoupling::particleCloud::computeForces()
         {
             Vv[i] = particles_.volume(i)*particles_.meanVelocity[i];
         }
-        solidFlux_.primitiveFieldRef() = vf.spread(Vv);
+        solidFlux_.primitiveFieldRef() = voidFraction_->spread(Vv);
         solidFlux_.correctBoundaryConditions();
     }
 
@@ -591,7 +424,7 @@ void Foam::demCoupling::particleCloud::computeForces()
     // demDrag implicit that is the drag the DEM applied in the interval
     // just run, K (u - v) at every step with the DEM's K and u of it: its
     // mean is K (u - mean v), mean v the displacement over the interval
-    if (implicitDemDrag_)
+    if (controls_->implicitDemDrag())
     {
         momentumCoupling_->assemble
         (
@@ -609,76 +442,18 @@ void Foam::demCoupling::particleCloud::computeForces()
     }
 }
 
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
-
-Foam::scalar Foam::demCoupling::particleCloud::wholeDemSteps
-(
-    const scalar dt,
-    const scalar dtOld,
-    const scalar dtLimit
-) const
-{
-    if (!active())
-    {
-        return dt;
-    }
-    const scalar dtDem = engine_->timeStep();
-    const label nOld = max(label(1), label(std::round(dtOld/dtDem)));
-
-    label n = max(label(1), label(std::floor(dt/dtDem*(1 + 1e-9))));
-    if (n <= nOld && dt > dtOld*(1 + 1e-9) && (nOld + 1)*dtDem <= dtLimit)
-    {
-        // Growth wanted but lost to rounding: one DEM step more
-        n = nOld + 1;
-    }
-
-    // Land on the end time and on write times (writeControl runTime or
-    // adjustableRunTime), in whole DEM steps
-    const Time& runTime = mesh_.time();
-    const scalar t = runTime.value();
-    auto capAt = [&](const scalar tTarget)
-    {
-        // nTo DEM steps to go: split them into equal coupling steps of at
-        // most n (as Time::adjustDeltaT does), so the last one lands
-        const label nTo = label(std::round((tTarget - t)/dtDem));
-        if (nTo >= 1)
-        {
-            const label nSteps = (nTo + n - 1)/n;
-            n = (nTo + nSteps - 1)/nSteps;
-        }
-    };
-    capAt(runTime.endTime().value());
-
-    const dictionary& control = runTime.controlDict();
-    const word writeControl
-    (
-        control.getOrDefault<word>("writeControl", "timeStep")
-    );
-    if (writeControl == "runTime" || writeControl == "adjustableRunTime")
-    {
-        const scalar interval = control.get<scalar>("writeInterval");
-        const scalar t0 = runTime.startTime().value();
-        const scalar k = std::floor((t - t0)/interval + 1e-6) + 1;
-        capAt(t0 + k*interval);
-    }
-
-    return n*dtDem;
-}
-
-
 void Foam::demCoupling::particleCloud::sendForces()
 {
     // Summed over the ranks that hold a particle: the host's only
-    List<vector> hostForce(implicitDemDrag_ ? demForce_ : fluidForce_);
-    scalarList hostKUf(implicitDemDrag_ ? 4*hostForce.size() : 0, Zero);
+    List<vector> hostForce(controls_->implicitDemDrag() ? demForce_ : fluidForce_);
+    scalarList hostKUf(controls_->implicitDemDrag() ? 4*hostForce.size() : 0, Zero);
     forAll(hostForce, i)
     {
         if (particles_.hostProc[i] != Pstream::myProcNo())
         {
             hostForce[i] = Zero;
         }
-        else if (implicitDemDrag_)
+        else if (controls_->implicitDemDrag())
         {
             hostKUf[4*i] = demK_[i];
             for (direction k = 0; k < 3; ++k)
@@ -687,7 +462,7 @@ void Foam::demCoupling::particleCloud::sendForces()
             }
         }
     }
-    if (implicitDemDrag_)
+    if (controls_->implicitDemDrag())
     {
         const scalarList KUf(exchange_->toOwners(hostKUf, 4));
         scalarList K(KUf.size()/4);
@@ -711,6 +486,26 @@ void Foam::demCoupling::particleCloud::sendForces()
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::demCoupling::particleCloud::wholeDemSteps
+(
+    const scalar dt,
+    const scalar dtOld,
+    const scalar dtLimit
+) const
+{
+    if (!active())
+    {
+        return dt;
+    }
+    return couplingControls::wholeDemSteps
+    (
+        mesh_.time(), engine_->timeStep(), dt, dtOld, dtLimit
+    );
+}
+
+
 void Foam::demCoupling::particleCloud::evolve()
 {
     if (!active())
@@ -718,32 +513,8 @@ void Foam::demCoupling::particleCloud::evolve()
         return;
     }
 
-    const dictionary& dict = couplingDict_();
-    const Time& runTime = mesh_.time();
-
     // DEM steps in this coupling step: a whole number
-    const scalar dtDem = engine_->timeStep();
-    const scalar ratio = runTime.deltaTValue()/dtDem;
-    demSteps_ = label(std::round(ratio));
-    if (demSteps_ < 1 || mag(ratio - demSteps_) > 1e-6*ratio)
-    {
-        FatalIOErrorInFunction(runTime.controlDict())
-            << "deltaT " << runTime.deltaTValue() << " s is not a whole"
-            << " number of DEM steps (timestep " << dtDem << " s in "
-            << engine_->script() << "): ratio " << ratio << nl
-            << "    Set deltaT to a whole multiple of the DEM timestep."
-            << exit(FatalIOError);
-    }
-    if (!adjustTimeStep_ && demSteps_ != engine_->coupleEvery())
-    {
-        FatalIOErrorInFunction(dict)
-            << "The DEM script " << engine_->script() << " has couple_every "
-            << engine_->coupleEvery() << ", but deltaT/timestep = "
-            << runTime.deltaTValue() << "/" << dtDem << " = " << demSteps_
-            << " DEM steps per coupling step." << nl
-            << "    Set couple_every " << demSteps_ << " in the fix couple/cfd,"
-            << " or change deltaT in system/controlDict." << exit(FatalIOError);
-    }
+    demSteps_ = controls_->demSteps(mesh_.time(), engine_());
 
     // 0. Before the first DEM advance of a fresh start: the fluid forces of
     //    the initial state (else the first interval would run without
@@ -751,209 +522,73 @@ void Foam::demCoupling::particleCloud::evolve()
     //    holds, from its restart file, the forces it had at that time.
     if (!forcesSent_ && !engine_->restarted())
     {
+        sampleFluid();
         computeForces();
+        assembleSources();
         sendForces();
     }
 
-    // 1. DEM advance. In parallel the DEM phase ends when its slowest rank
-    //    is done: the wait for it is DEM time (LIGGGHTS's load balance),
-    //    not time the exchange that follows spends in its collectives
-    scalar t0 = clock_.elapsedTime();
-    engine_->advance(demSteps_);
-    if (Pstream::parRun())
-    {
-        MPI_Barrier(MPI_COMM_WORLD);
-    }
-    scalar t1 = clock_.elapsedTime();
-    demTime_ += t1 - t0;
+    advanceDem();                           // 1. DEM advance
+    const scalar t1 = diagnostics_.now();
 
-    // 2-4. particle data, locate, void fraction
-    updateParticles();
+    updateParticles();                      // 2-4. particles in, locate,
+                                            //      void fraction
+    deleteOutsideParticles();               // (outsideParticles delete)
+    cellsPerStep_ = maxCellsPerStep();
 
-    deletedNow_ = 0;
-    if (outsidePolicy_ == "delete" && locator_->lost())
-    {
-        // Each lost particle is counted by one rank: all ranks' lists
-        List<labelList> perRank(Pstream::nProcs());
-        perRank[Pstream::myProcNo()] = locator_->lostTags();
-        Pstream::gatherList(perRank);
-        Pstream::scatterList(perRank);
-        DynamicList<label> tags;
-        for (const labelList& l : perRank)
-        {
-            tags.append(l);
-        }
-        engine_->deleteParticles(tags);
-        deletedNow_ = tags.size();
-        deletedTotal_ += deletedNow_;
-        // not a loss LIGGGHTS made: keep it out of the "left the DEM" count
-        lastDemCount_ -= deletedNow_;
-        updateParticles();
-    }
-
-    // How many cells a particle crosses per coupling step: above one, the
-    // fluid it sees jumps (and so do its forces)
-    // (the largest (|u| dt)^3/V_cell, one cube root: a cube root per
-    // particle was a tenth of the coupling time)
-    {
-        const scalarField& V = mesh_.V();
-        const scalar dt = runTime.deltaTValue();
-        scalar maxCube = 0;
-        forAll(particles_.cell, i)
-        {
-            const label c = particles_.cell[i];
-            if (c >= 0 && particles_.hostProc[i] == Pstream::myProcNo())
-            {
-                maxCube = max
-                (
-                    maxCube,
-                    pow3(mag(particles_.velocity[i])*dt)/V[c]
-                );
-            }
-        }
-        cellsPerStep_ = cbrt(returnReduce(maxCube, maxOp<scalar>()));
-    }
-
-    // 5-6. fluid at the particles, forces, fluid sources
-    const scalar tf = clock_.elapsedTime();
+    const scalar tf = diagnostics_.now();
     const scalar xf = exchange_->seconds();
-    computeForces();
-    forcesTime_ += (clock_.elapsedTime() - tf) - (exchange_->seconds() - xf);
+    sampleFluid();                          // 5. fluid at the particles
+    computeForces();                        // 6. forces
+    assembleSources();                      // 8. fluid sources
+    diagnostics_.addForces
+    (
+        (diagnostics_.now() - tf) - (exchange_->seconds() - xf)
+    );
 
-    // 7. forces back to the DEM rank that owns each particle
-    sendForces();
+    sendForces();                           // 7. forces out
 
-    couplingTime_ += clock_.elapsedTime() - t1;
-    particleSteps_ += exchange_->nTotal();
+    diagnostics_.addCoupling(diagnostics_.now() - t1);
+    diagnostics_.addParticleSteps(exchange_->nTotal());
 }
 
 
 void Foam::demCoupling::particleCloud::report()
 {
-    const Time& runTime = mesh_.time();
-
-    if (active())
+    if (!active())
     {
-        label hosted = 0;
-        for (const label c : particles_.cell)
-        {
-            if (c >= 0) ++hosted;
-        }
-        reduce(hosted, sumOp<label>());
-
-        const label nDem = exchange_->nTotal();
-        Info<< "Particles: " << nDem << " in the DEM, "
-            << hosted << " in the mesh, " << demSteps_ << " DEM steps,"
-            << " min(voidfraction) " << gMin(voidfraction_) << endl;
-
-        if (nDem < lastDemCount_)
-        {
-            Info<< "Warning: " << lastDemCount_ - nDem
-                << " particle(s) left the DEM domain at t = "
-                << runTime.timeName() << " s (LIGGGHTS dropped them); "
-                << nDem << " remain" << endl;
-        }
-        lastDemCount_ = nDem;
-
-        if (deletedNow_)
-        {
-            Info<< "Deleted " << deletedNow_ << " particle(s) outside the"
-                << " fluid mesh at t = " << runTime.timeName() << " s ("
-                << deletedTotal_ << " since the start; outsideParticles"
-                << " delete)" << endl;
-        }
-        else if (locator_->lost())
-        {
-            Info<< "Warning: " << locator_->lost() << " particle(s) outside"
-                << " the fluid mesh at t = " << runTime.timeName()
-                << " s: no fluid force on them (outsideParticles ignore;"
-                << " 'delete' removes them from the DEM)" << endl;
-        }
-        if (voidFraction_->floorHits())
-        {
-            Info<< "Warning: voidfraction floor " << voidFraction_->minVoidFraction()
-                << " hit in " << voidFraction_->floorHits() << " cell(s) at"
-                << " t = " << runTime.timeName() << " s ("
-                << voidFraction_->totalFloorHits() << " since the start):"
-                << " more particle volume than these cells hold. Use a"
-                << " void-fraction model that spreads wider (virtualSphere,"
-                << " diffusion) or larger cells; lowering minVoidFraction"
-                << " only hides it." << endl;
-        }
-        if (cellsPerStep_ > 1)
-        {
-            Info<< "Warning: a particle crossed " << cellsPerStep_
-                << " cells in one coupling step at t = " << runTime.timeName()
-                << " s: the fluid it sees jumps between steps. Reduce deltaT"
-                << " (fewer DEM steps per coupling step)." << endl;
-        }
+        diagnostics_.report(mesh_.time(), nullptr);
+        return;
     }
 
-    // Progress of long runs: every 30 s of wall time and at the end
-    const scalar now = clock_.elapsedTime();
-    const scalar tNow = runTime.value();
-    const scalar tEnd = runTime.endTime().value();
-    const scalar tStart = runTime.startTime().value();
-    const bool last = tNow >= tEnd - 0.5*runTime.deltaTValue();
-    if (now - lastProgress_ >= 30 || last)
+    couplingStepReport step;
+    for (const label c : particles_.cell)
     {
-        lastProgress_ = now;
-        const scalar wall = now - startTime_;
-        const scalar done = (tNow - tStart)/max(tEnd - tStart, VSMALL);
-        const scalar eta = done > 0 ? wall*(1 - done)/done : 0;
-        Info<< "Progress: t = " << tNow << " s of " << tEnd << " s ("
-            << label(100*done) << " %), wall " << label(wall) << " s, ETA "
-            << label(eta) << " s" << endl;
+        if (c >= 0) ++step.hosted;
     }
+    reduce(step.hosted, sumOp<label>());
+    step.nDem = exchange_->nTotal();
+    step.demSteps = demSteps_;
+    step.minVoidFraction = gMin(voidfraction_);
+    step.lostByDem = max(lastDemCount_ - step.nDem, label(0));
+    lastDemCount_ = step.nDem;
+    step.deleted = deletedNow_;
+    step.deletedTotal = deletedTotal_;
+    step.outside = locator_->lost();
+    step.floorHits = voidFraction_->floorHits();
+    step.totalFloorHits = voidFraction_->totalFloorHits();
+    step.floor = voidFraction_->minVoidFraction();
+    step.cellsPerStep = cellsPerStep_;
+
+    diagnostics_.report(mesh_.time(), &step);
 }
 
 
 void Foam::demCoupling::particleCloud::writeParticles() const
 {
-    if (!active())
+    if (active())
     {
-        return;
-    }
-
-    IDLList<passiveParticle> list;
-    DynamicList<scalar> d;
-    DynamicList<vector> Up, F, omega;
-    DynamicList<label> id, type;
-    forAll(particles_.cell, i)
-    {
-        if (particles_.cell[i] < 0)
-        {
-            continue;
-        }
-        list.append
-        (
-            new passiveParticle(mesh_, particles_.position[i], particles_.cell[i])
-        );
-        d.append(particles_.diameter[i]);
-        Up.append(particles_.velocity[i]);
-        F.append(i < fluidForce_.size() ? fluidForce_[i] : Zero);
-        omega.append(particles_.omega[i]);
-        id.append(particles_.tag[i]);
-        type.append(particles_.type[i]);
-    }
-
-    passiveParticleCloud cloud(mesh_, "demParticles", list);
-    cloud.write();
-
-    if (cloud.size())
-    {
-        IOField<scalar>(cloud.fieldIOobject("d", IOobject::NO_READ), d).write();
-        IOField<vector>(cloud.fieldIOobject("U", IOobject::NO_READ), Up).write();
-        IOField<vector>(cloud.fieldIOobject("F", IOobject::NO_READ), F).write();
-        IOField<vector>
-        (
-            cloud.fieldIOobject("omega", IOobject::NO_READ), omega
-        ).write();
-        IOField<label>(cloud.fieldIOobject("id", IOobject::NO_READ), id).write();
-        IOField<label>
-        (
-            cloud.fieldIOobject("type", IOobject::NO_READ), type
-        ).write();
+        couplingDiagnostics::writeParticles(mesh_, particles_, fluidForce_);
     }
 }
 
@@ -982,68 +617,24 @@ void Foam::demCoupling::particleCloud::writeDemRestart()
 }
 
 
-void Foam::demCoupling::particleCloud::checkFinite()
+void Foam::demCoupling::particleCloud::checkFinite(Time& runTime) const
 {
-    const volScalarField& p = mesh_.lookupObject<volScalarField>("p_rgh");
-    // One reduction for the three fields; the names of the bad ones
-    scalarList sums
-    ({
-        sumMag(U_.primitiveField()),
-        sumMag(p.primitiveField()),
-        sumMag(voidfraction_.primitiveField())
-    });
-    Pstream::listCombineGather(sums, plusEqOp<scalar>());
-    Pstream::listCombineScatter(sums);
-    const wordList names({U_.name(), p.name(), voidfraction_.name()});
-    wordList bad;
-    forAll(sums, i)
-    {
-        if (!std::isfinite(sums[i]))
-        {
-            bad.append(names[i]);
-        }
-    }
-    if (bad.size())
-    {
-        Time& runTime = const_cast<Time&>(mesh_.time());
-        runTime.writeNow();
-        FatalErrorInFunction
-            << "NaN or Inf in the fluid field(s) " << flatOutput(bad)
-            << " at t = " << runTime.timeName() << " s." << nl
-            << "    The fields of this time are written for inspection;"
-            << " results of earlier write times are kept." << nl
-            << "    Reduce deltaT (maxCo), check the boundary conditions, and"
-            << " look for voidfraction floor hits above." << exit(FatalError);
-    }
+    couplingDiagnostics::checkFinite
+    (
+        runTime, fluid_.U(), fluid_.solvedPressure(), voidfraction_
+    );
 }
 
 
 void Foam::demCoupling::particleCloud::printTimingSplit() const
 {
-    const scalar total = clock_.elapsedTime() - startTime_;
-    const scalar cfd = max(total - demTime_ - couplingTime_, scalar(0));
-
-    Info<< "Timing split: DEM " << demTime_ << " s, CFD " << cfd
-        << " s, coupling " << couplingTime_ << " s" << endl;
-
-    if (active())
-    {
-        Info<< "Coupling split: exchange "
-            << exchange_->seconds() - exchangeStart_
-            << " s, locate " << locateTime_ << " s, void fraction "
-            << voidFractionTime_ << " s, forces " << forcesTime_ << " s ("
-            << particleSteps_ << " particle steps, "
-            << 1e6*couplingTime_/max(particleSteps_, scalar(1))
-            << " us per particle per coupling step)" << endl;
-        if (Pstream::parRun())
-        {
-            const label held = particles_.size();
-            Info<< "Particles held per rank at the end: min "
-                << returnReduce(held, minOp<label>()) << ", max "
-                << returnReduce(held, maxOp<label>()) << " (of "
-                << exchange_->nTotal() << " in the DEM)" << endl;
-        }
-    }
+    diagnostics_.printTimingSplit
+    (
+        active(),
+        active() ? exchange_->seconds() : 0,
+        active() ? exchange_->nTotal() : 0,
+        particles_.size()
+    );
 }
 
 

@@ -46,14 +46,32 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     ),
     solverControls_()
 {
-    solverControls_.add("solver", "PCG");
-    solverControls_.add("preconditioner", "DIC");
-    solverControls_.add("tolerance", 1e-14);
-    solverControls_.add("relTol", 0.0);
-    solverControls_.add("maxIter", 1000);
+    // The linear solver: fvSolution's solvers.voidFractionSmoothing when
+    // the case sets one, else a tight PCG (what is left unsolved is
+    // particle volume lost or gained)
+    const dictionary solvers
+    (
+        static_cast<const fvSolution&>(mesh).subOrEmptyDict("solvers")
+    );
+    if (solvers.found("voidFractionSmoothing"))
+    {
+        solverControls_ = mesh.solverDict("voidFractionSmoothing");
+    }
+    else
+    {
+        solverControls_.add("solver", "PCG");
+        solverControls_.add("preconditioner", "DIC");
+        solverControls_.add("tolerance", 1e-14);
+        solverControls_.add("relTol", 0.0);
+        solverControls_.add("maxIter", 1000);
+    }
 
     Info<< "    diffusion: bandwidth " << bandwidth_ << " m, " << nSteps_
-        << " implicit steps" << endl;
+        << " implicit steps; solver " << solverControls_.get<word>("solver")
+        << (solvers.found("voidFractionSmoothing") ? " (fvSolution"
+            " solvers.voidFractionSmoothing)" : " (the default: PCG/DIC to"
+            " 1e-14; fvSolution solvers.voidFractionSmoothing sets it)")
+        << endl;
 }
 
 

@@ -1,0 +1,273 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+#include "couplingControls.H"
+#include "demEngine.H"
+#include "voidFractionModel.H"
+#include "forceModel.H"
+#include "Switch.H"
+
+#include <vector>
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::demCoupling::couplingControls::outsidePolicy>
+Foam::demCoupling::couplingControls::outsidePolicyNames
+({
+    { outsidePolicy::ignore, "ignore" },
+    { outsidePolicy::remove, "delete" },
+});
+
+const Foam::Enum<Foam::demCoupling::couplingControls::demDragPolicy>
+Foam::demCoupling::couplingControls::demDragPolicyNames
+({
+    { demDragPolicy::implicitDrag, "implicit" },
+    { demDragPolicy::explicitForce, "explicit" },
+});
+
+
+namespace
+{
+
+// Levenshtein distance, for "did you mean"
+Foam::label editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<Foam::label> prev(b.size() + 1), cur(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+    {
+        cur[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j)
+        {
+            const Foam::label sub = prev[j - 1] + (a[i - 1] != b[j - 1]);
+            cur[j] = std::min(std::min(prev[j] + 1, cur[j - 1] + 1), sub);
+        }
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+// Every keyword of couplingProperties must be one this code reads: a typo
+// ("minVoidfraction") would otherwise fall back to a default or be
+// ignored without a word
+void checkKeywords(const Foam::dictionary& dict)
+{
+    using namespace Foam;
+    using namespace Foam::demCoupling;
+
+    wordList known
+    ({
+        "demScript", "demRestartScript", "voidFraction", "minVoidFraction",
+        "forces", "momentumCoupling", "outsideParticles", "exchange",
+        "demDrag"
+    });
+    for (const word& m : voidFractionModel::dictionaryConstructorTablePtr_->sortedToc())
+    {
+        known.append(m + "Coeffs");
+    }
+    for (const word& m : forceModel::dictionaryConstructorTablePtr_->sortedToc())
+    {
+        known.append(m + "Coeffs");
+    }
+
+    for (const word& key : dict.toc())
+    {
+        if (key == "FoamFile" || known.found(key))
+        {
+            continue;
+        }
+        word best;
+        label bestDistance = labelMax;
+        for (const word& k : known)
+        {
+            const label d = editDistance(key, k);
+            if (d < bestDistance)
+            {
+                bestDistance = d;
+                best = k;
+            }
+        }
+        FatalIOErrorInFunction(dict)
+            << "Unknown keyword '" << key << "' in " << dict.name() << nl;
+        if (bestDistance <= max(label(2), label(key.size()/3)))
+        {
+            FatalIOError << "    Did you mean '" << best << "'?" << nl;
+        }
+        FatalIOError
+            << "    Allowed: " << flatOutput(known) << exit(FatalIOError);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::couplingControls::couplingControls
+(
+    const dictionary& dict,
+    const Time& runTime
+)
+:
+    dict_(dict),
+    outside_(outsidePolicy::ignore),
+    demDrag_(demDragPolicy::implicitDrag),
+    adjustTimeStep_
+    (
+        runTime.controlDict().getOrDefault<Switch>("adjustTimeStep", false)
+    )
+{
+    checkKeywords(dict);
+
+    const word outside(dict.getOrDefault<word>("outsideParticles", "ignore"));
+    if (!outsidePolicyNames.found(outside))
+    {
+        FatalIOErrorInFunction(dict)
+            << "outsideParticles '" << outside << "' in "
+            << dict.name() << ": allowed are ignore (no fluid force on a"
+            << " particle outside the fluid mesh, counted) and delete"
+            << " (removed from the DEM)" << exit(FatalIOError);
+    }
+    outside_ = outsidePolicyNames[outside];
+
+    // How the DEM applies the drag (see docs/forces.md, "Quiet dense beds")
+    const word demDrag(dict.getOrDefault<word>("demDrag", "implicit"));
+    if (!demDragPolicyNames.found(demDrag))
+    {
+        FatalIOErrorInFunction(dict)
+            << "demDrag '" << demDrag << "' in " << dict.name() << ": allowed"
+            << " are implicit (the drag K (u - v) applied in every DEM step"
+            << " with the particle's velocity of that step; the default) and"
+            << " explicit (the whole force held over the coupling interval)"
+            << exit(FatalIOError);
+    }
+    demDrag_ = demDragPolicyNames[demDrag];
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demCoupling::couplingControls::checkDem
+(
+    const demEngine& engine,
+    const fvMesh& mesh
+) const
+{
+    if (implicitDemDrag() && !engine.implicitDrag())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "demDrag implicit (" << (dict_.found("demDrag") ? "set" : "the"
+            " default") << " in " << dict_.name() << ") needs the fix" << nl
+            << "    fix cfd2 all couple/cfd/force/implicit" << nl
+            << "in the DEM script " << engine.script() << " instead of"
+            << " couple/cfd/force; or set demDrag explicit."
+            << exit(FatalIOError);
+    }
+    Info<< "DEM drag: " << demDragPolicyNames[demDrag_] << endl;
+
+    // The DEM box must hold the whole fluid mesh: where it does not, a
+    // particle leaves the DEM while still in the fluid
+    const boundBox demBox(engine.box());
+    const boundBox& meshBox = mesh.bounds();
+    const scalar tol = 1e-6*mag(meshBox.span());
+    if
+    (
+        cmptMin(meshBox.min() - demBox.min()) < -tol
+     || cmptMax(meshBox.max() - demBox.max()) > tol
+    )
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The DEM box of " << engine.script() << ", "
+            << demBox.min() << " to " << demBox.max() << ", does not"
+            << " cover the fluid mesh, " << meshBox.min() << " to "
+            << meshBox.max() << "." << nl
+            << "    Enlarge the region of create_box in the DEM script"
+            << " (it may be larger than the mesh, not smaller)."
+            << exit(FatalIOError);
+    }
+
+    engine.checkTimeStep();
+}
+
+
+Foam::label Foam::demCoupling::couplingControls::demSteps
+(
+    const Time& runTime,
+    const demEngine& engine
+) const
+{
+    const scalar dtDem = engine.timeStep();
+    const scalar ratio = runTime.deltaTValue()/dtDem;
+    const label n = label(std::round(ratio));
+    if (n < 1 || mag(ratio - n) > 1e-6*ratio)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "deltaT " << runTime.deltaTValue() << " s is not a whole"
+            << " number of DEM steps (timestep " << dtDem << " s in "
+            << engine.script() << "): ratio " << ratio << nl
+            << "    Set deltaT to a whole multiple of the DEM timestep."
+            << exit(FatalIOError);
+    }
+    if (!adjustTimeStep_ && n != engine.coupleEvery())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The DEM script " << engine.script() << " has couple_every "
+            << engine.coupleEvery() << ", but deltaT/timestep = "
+            << runTime.deltaTValue() << "/" << dtDem << " = " << n
+            << " DEM steps per coupling step." << nl
+            << "    Set couple_every " << n << " in the fix couple/cfd,"
+            << " or change deltaT in system/controlDict." << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+Foam::scalar Foam::demCoupling::couplingControls::wholeDemSteps
+(
+    const Time& runTime,
+    const scalar dtDem,
+    const scalar dt,
+    const scalar dtOld,
+    const scalar dtLimit
+)
+{
+    const label nOld = max(label(1), label(std::round(dtOld/dtDem)));
+
+    label n = max(label(1), label(std::floor(dt/dtDem*(1 + 1e-9))));
+    if (n <= nOld && dt > dtOld*(1 + 1e-9) && (nOld + 1)*dtDem <= dtLimit)
+    {
+        // Growth wanted but lost to rounding: one DEM step more
+        n = nOld + 1;
+    }
+
+    // Land on the end time and on write times (writeControl runTime or
+    // adjustableRunTime), in whole DEM steps
+    const scalar t = runTime.value();
+    auto capAt = [&](const scalar tTarget)
+    {
+        // nTo DEM steps to go: split them into equal coupling steps of at
+        // most n (as Time::adjustDeltaT does), so the last one lands
+        const label nTo = label(std::round((tTarget - t)/dtDem));
+        if (nTo >= 1)
+        {
+            const label nSteps = (nTo + n - 1)/n;
+            n = (nTo + nSteps - 1)/nSteps;
+        }
+    };
+    capAt(runTime.endTime().value());
+
+    const dictionary& control = runTime.controlDict();
+    const word writeControl
+    (
+        control.getOrDefault<word>("writeControl", "timeStep")
+    );
+    if (writeControl == "runTime" || writeControl == "adjustableRunTime")
+    {
+        const scalar interval = control.get<scalar>("writeInterval");
+        const scalar t0 = runTime.startTime().value();
+        const scalar k = std::floor((t - t0)/interval + 1e-6) + 1;
+        capAt(t0 + k*interval);
+    }
+
+    return n*dtDem;
+}

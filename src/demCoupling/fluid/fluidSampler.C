@@ -1,0 +1,191 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+#include "fluidSampler.H"
+#include "fvc.H"
+
+namespace
+{
+
+// Writes scalars and vectors one after the other into a buffer slot, or
+// reads them back in the same order
+struct slot
+{
+    Foam::scalar* q;
+
+    void put(const Foam::scalar v) { *q++ = v; }
+    void put(const Foam::vector& v) { put(v.x()); put(v.y()); put(v.z()); }
+};
+
+struct readSlot
+{
+    const Foam::scalar* q;
+
+    Foam::scalar scalar() { return *q++; }
+    Foam::vector vector()
+    {
+        const Foam::vector v(q[0], q[1], q[2]);
+        q += 3;
+        return v;
+    }
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::fluidSampler::fluidSampler
+(
+    const PtrList<forceModel>& forces
+)
+:
+    needVorticity_(false),
+    needViscousStress_(false)
+{
+    for (const forceModel& model : forces)
+    {
+        needVorticity_ = needVorticity_ || model.needsVorticity();
+        needViscousStress_ = needViscousStress_ || model.needsViscousStress();
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+Foam::label Foam::demCoupling::fluidSampler::width() const
+{
+    // Uf, eps, rhoF, muF, gradP [, vorticity] [, divTau]
+    return 9 + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0);
+}
+
+
+void Foam::demCoupling::fluidSampler::pack
+(
+    const particleFluidState& s,
+    scalar* q
+) const
+{
+    slot out{q};
+    out.put(s.Uf);
+    out.put(s.eps);
+    out.put(s.rhoF);
+    out.put(s.muF);
+    out.put(s.gradP);
+    if (needVorticity_)
+    {
+        out.put(s.vorticity);
+    }
+    if (needViscousStress_)
+    {
+        out.put(s.divTau);
+    }
+}
+
+
+void Foam::demCoupling::fluidSampler::unpack
+(
+    const scalar* q,
+    particleFluidState& s
+) const
+{
+    readSlot in{q};
+    s.Uf = in.vector();
+    s.eps = in.scalar();
+    s.rhoF = in.scalar();
+    s.muF = in.scalar();
+    s.gradP = in.vector();
+    if (needVorticity_)
+    {
+        s.vorticity = in.vector();
+    }
+    if (needViscousStress_)
+    {
+        s.divTau = in.vector();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::List<Foam::demCoupling::particleFluidState>
+Foam::demCoupling::fluidSampler::sample
+(
+    const voidFractionModel& vf,
+    const fluidView& fluid,
+    const volScalarField& voidfraction,
+    const particleData& particles
+) const
+{
+    const label n = particles.size();
+    List<particleFluidState> states(n);
+
+    // This processor's part of each particle's weighted averages
+    {
+        const volVectorField& U = fluid.U();
+        const List<vector> Ui(vf.sample(U));
+        const scalarList epsi(vf.sample(voidfraction));
+        const scalarList rhoi(vf.sample(fluid.rho()));
+        const scalarList mui(vf.sample(fluid.mu()()));
+        const List<vector> gradPi(vf.sample(fluid.gradP()()));
+        forAll(states, i)
+        {
+            states[i].Uf = Ui[i];
+            states[i].eps = epsi[i];
+            states[i].rhoF = rhoi[i];
+            states[i].muF = mui[i];
+            states[i].gradP = gradPi[i];
+        }
+        if (needVorticity_)
+        {
+            const List<vector> w
+            (
+                vf.sample(volVectorField("curlU", fvc::curl(U)))
+            );
+            forAll(states, i)
+            {
+                states[i].vorticity = w[i];
+            }
+        }
+        if (needViscousStress_)
+        {
+            // tau = mu (grad(U) + grad(U)^T - 2/3 div(U) I)
+            const volScalarField mu(fluid.mu());
+            const volTensorField gradU(fvc::grad(U));
+            const List<vector> divTau
+            (
+                vf.sample
+                (
+                    volVectorField
+                    (
+                        "divTau",
+                        fvc::laplacian(mu, U) + fvc::div(mu*dev2(T(gradU)))
+                    )
+                )
+            );
+            forAll(states, i)
+            {
+                states[i].divTau = divTau[i];
+            }
+        }
+    }
+
+    // Summed over the processors that hold cells of a particle
+    const label w = width();
+    scalarList sums(w*n, Zero);
+    forAll(states, i)
+    {
+        pack(states[i], &sums[w*i]);
+    }
+    particles.combine(sums, w, combineOp::sum);
+    forAll(states, i)
+    {
+        particleFluidState& s = states[i];
+        unpack(&sums[w*i], s);
+        s.Up = particles.velocity[i];
+        s.omega = particles.omega[i];
+        s.d = particles.diameter[i];
+        s.rhoP = particles.density[i];
+    }
+    return states;
+}
