@@ -54,6 +54,12 @@ set_tests_properties(case.packedBedGidaspow PROPERTIES LABELS "case;coupled;forc
 add_test(case.packedBedRong "bash" "cases/packedBed.sh" "RongDrag")
 set_tests_properties(case.packedBedRong PROPERTIES LABELS "case;coupled;forces" TIMEOUT 600)
 
+# The single-phase solver (pimpleDemFoam) on the same bed: Ergun within 10 %,
+# interDemFoam's pressure gradient within 0.1 %, continuity as good as interDemFoam's; its
+# negative control (no drag) must miss Ergun by more than 50 %
+add_test(case.packedBedSinglePhase "bash" "cases/packedBed.sh" "RongDrag" "pimpleDemFoam")
+set_tests_properties(case.packedBedSinglePhase PROPERTIES LABELS "case;coupled;forces" TIMEOUT 600)
+
 # Released bed above minimum fluidization: alpha stays 1 while eps changes
 add_test(case.fluidizedBedAlpha "bash" "cases/packedBed.sh" "fluidize")
 set_tests_properties(case.fluidizedBedAlpha PROPERTIES LABELS "case;coupled" TIMEOUT 600)

@@ -11,13 +11,26 @@
 # With GidaspowDrag, a negative control: the same poured bed with
 # SchillerNaumannDrag (no voidage correction) must miss Ergun by more than
 # 50 % (it gives -81 %), so the 10 % check can fail.
+#   packedBed.sh RongDrag pimpleDemFoam: the same bed also with the
+#   single-phase solver (no VoF: water without alpha.water): its pressure
+#   gradient within 10 % of Ergun and within 0.1 % of interDemFoam's on the
+#   same bed (the two solve the same equations where alpha = 1), its
+#   cumulative continuity error no larger than interDemFoam's (x 1.1; both
+#   are set by the pressure solver's tolerance); both CPU times printed.
+#   Negative control: pimpleDemFoam without the particles' drag (forces:
+#   pressureGradient only) must miss Ergun by more than 50 %.
 #   packedBed.sh fluidize: the bed released at 30 mm/s (above U_mf): water
 #   fills the column, so alpha must stay 1 (to 1e-6) while eps changes every
 #   step, and the water volume sum(eps alpha V) must not change.
 . "$(dirname "$0")/caseFunctions.sh"
 law="${1:-GidaspowDrag}"
+secondSolver="${2:-}"
+case "$secondSolver" in
+    ''|pimpleDemFoam) ;;
+    *) fail "packedBed.sh: second argument: pimpleDemFoam or none, got '$secondSolver'" ;;
+esac
 
-copyTutorial packedBed "packedBed-$law"
+copyTutorial packedBed "packedBed-$law${secondSolver:+-$secondSolver}"
 
 sed -i 's/^width .*/width   0.012;/; s/^nCells .*/nCells  3;/' system/blockMeshDict
 liggghts -in DEM/in.pour -var width 0.012 -var nBeads 825 -echo none \
@@ -92,6 +105,26 @@ then
     rm -rf "$control" && cp -r . "$control"
 fi
 
+# The single-phase copy of the case (pimpleDemFoam): no alpha.water, one
+# fluid in transportProperties
+single="$runDir/packedBed-$law-single"
+singleNoDrag="$runDir/packedBed-$law-singleNoDrag"
+if [ -n "$secondSolver" ]
+then
+    rm -rf "$single" "$singleNoDrag" && cp -r . "$single"
+    (
+        cd "$single" || exit 1
+        rm -f 0/alpha.water 0.orig/alpha.water
+        cat > constant/transportProperties <<'PROPS'
+FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
+transportModel  Newtonian;
+nu              1e-06;
+rho             1000;
+PROPS
+    ) || fail "could not make the single-phase case"
+    cp -r "$single" "$singleNoDrag"
+fi
+
 runApplication interDemFoam || fail "interDemFoam failed (log.interDemFoam)"
 err=$(ergunError . "$law") || fail "$law: no pressure gradient against Ergun (runs/log.plotPackedBed)"
 check "$law: error against Ergun" "$err" 'v > -0.10 && v < 0.10' \
@@ -109,6 +142,42 @@ then
     check "SchillerNaumannDrag: error against Ergun" "$errSN" 'v < -0.5' \
         "negative control: Schiller-Naumann drag is off Ergun by only $errSN (below -50 % expected)"
     echo "negative control: Schiller-Naumann drag off Ergun by $errSN (fails the 10 % check)"
+fi
+
+if [ -n "$secondSolver" ]
+then
+    ( cd "$single" && runApplication pimpleDemFoam ) \
+        || fail "pimpleDemFoam failed ($single/log.pimpleDemFoam)"
+    grep -q "^End" "$single/log.pimpleDemFoam" || fail "pimpleDemFoam did not end"
+    errSingle=$(ergunError "$single" "$law") \
+        || fail "pimpleDemFoam: no pressure gradient against Ergun"
+    check "pimpleDemFoam $law: error against Ergun" "$errSingle" 'v > -0.10 && v < 0.10' \
+        "pimpleDemFoam: pressure gradient off Ergun by $errSingle (10 % allowed)"
+    dpTwo=$(awk '!/^#/ { print $5; exit }' runs/pressureDrop.dat)
+    dpOne=$(awk '!/^#/ { print $5; exit }' "$single/runs/pressureDrop.dat")
+    rel=$(awk -v a="$dpOne" -v b="$dpTwo" 'BEGIN { d = (a - b)/b; printf "%.3e", d < 0 ? -d : d }')
+    check "pimpleDemFoam against interDemFoam, relative difference of dp/dz" "$rel" 'v < 1e-3' \
+        "pimpleDemFoam's pressure gradient $dpOne Pa/m differs from interDemFoam's $dpTwo Pa/m by $rel (0.1 % allowed)"
+    cont=$(awk '/continuity errors/ { c = $NF } END { if (c != "") print (c < 0 ? -c : c) }' "$single/log.pimpleDemFoam")
+    contTwo=$(awk '/continuity errors/ { c = $NF } END { if (c != "") print (c < 0 ? -c : c) }' log.interDemFoam)
+    requireNumber "interDemFoam cumulative continuity error" "$contTwo"
+    check "pimpleDemFoam cumulative continuity error" "$cont" "v <= 1.1*$contTwo + 1e-15" \
+        "pimpleDemFoam: cumulative continuity error $cont, above interDemFoam's $contTwo on the same bed"
+    wallTwo=$(awk '/^ExecutionTime/ { t = $3 } END { print t }' log.interDemFoam)
+    wallOne=$(awk '/^ExecutionTime/ { t = $3 } END { print t }' "$single/log.pimpleDemFoam")
+    (
+        cd "$singleNoDrag" || exit 1
+        setEntry constant/couplingProperties forces "( pressureGradient )"
+        runApplication pimpleDemFoam
+    ) || fail "pimpleDemFoam negative control failed ($singleNoDrag/log.pimpleDemFoam)"
+    errNoDrag=$(ergunError "$singleNoDrag" "$law") \
+        || fail "pimpleDemFoam negative control: no pressure gradient"
+    check "pimpleDemFoam without drag: error against Ergun" "$errNoDrag" 'v < -0.5' \
+        "negative control: without drag pimpleDemFoam is off Ergun by only $errNoDrag (below -50 % expected)"
+    pass "$law bed: interDemFoam off Ergun by $err, pimpleDemFoam by $errSingle" \
+         "(difference $rel, cumulative continuity error $cont vs $contTwo; CPU time" \
+         "interDemFoam $wallTwo s, pimpleDemFoam $wallOne s);" \
+         "negative control without drag: $errNoDrag"
 fi
 
 # The settling utility through the same library: seed Table 1, 0.1341 m/s

@@ -1,0 +1,175 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+/*---------------------------------------------------------------------------*\
+Application
+    pimpleDemFoam
+
+Description
+    One incompressible, isothermal fluid (no free surface) carrying the
+    locally averaged equations of a fluid that shares its cells with DEM
+    particles: the fluid volume fraction (porosity, "voidfraction") eps
+    enters continuity and momentum
+
+        d(eps)/dt + div(eps U) = 0                                  (seed eq. 8)
+        d(eps rho U)/dt + div(eps rho U U) = - eps grad(p) + eps div(tau)
+                          + eps rho g + f_pf                        (seed eq. 9)
+
+    interDemFoam's equations with one phase: for scenes without a free
+    surface (packed and fluidized beds, particles in a pipe), where a VoF
+    equation for water everywhere would model more than the scene needs.
+    Same library (libdemCoupling), same couplingProperties and models;
+    p_rgh = p - rho g.h is solved (Pa), rho from transportProperties.
+    The like-for-like peer of OpenFOAM's DPMFoam.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "turbulentTransportModel.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "particleCloud.H"
+#include "singlePhaseFluidView.H"
+#include "demRestartFile.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Single-phase incompressible solver for the locally averaged"
+        " equations of a fluid coupled to LIGGGHTS particles (CFD-DEM)."
+    );
+
+    demCoupling::demRestartFile::addOption();
+
+    #include "postProcess.H"
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+
+    // A restart first verifies the DEM state of its start time (and, with
+    // -restartFromLastComplete, falls back to the latest complete time)
+    {
+        Time startTime(Time::controlDictName, args);
+        demCoupling::demRestartFile::selectStartTime
+        (
+            startTime,
+            args.found("restartFromLastComplete")
+        );
+    }
+
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createFields.H"
+    #include "createFvOptions.H"
+    #include "initContinuityErrs.H"
+
+    turbulence->validate();
+
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+    if (adjustTimeStep)
+    {
+        const scalar dt0 = runTime.deltaTValue();
+        runTime.setDeltaT
+        (
+            particles.wholeDemSteps(dt0, dt0, dt0),
+            !particles.active()
+        );
+    }
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+
+        // Courant-limited step, a whole multiple of the DEM step landing
+        // on write and end times (particleCloud::wholeDemSteps)
+        if (adjustTimeStep)
+        {
+            const scalar maxDeltaTFact = maxCo/(CoNum + SMALL);
+            const scalar deltaTFact =
+                min(min(maxDeltaTFact, 1.0 + 0.1*maxDeltaTFact), 1.2);
+            const scalar dtOld = runTime.deltaTValue();
+            runTime.setDeltaT
+            (
+                particles.wholeDemSteps
+                (
+                    min(deltaTFact*dtOld, maxDeltaT),
+                    dtOld,
+                    min(maxDeltaTFact*dtOld, maxDeltaT)
+                ),
+                !particles.active()
+            );
+            Info<< "deltaT = " <<  runTime.deltaTValue() << endl;
+        }
+
+        ++runTime;
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // Coupling step: DEM advance, particle data, void fraction,
+        // particle-fluid forces, fluid source terms (eps, Ksl, Us, fExplicit)
+        particles.evolve();
+        epsRho == voidfraction*rho;
+
+        // d(eps)/dt in the pressure equation: snapshot (difference of two
+        // eps fields) or flux (div of the particles' solid volume flux)
+        const word voidFractionRate
+        (
+            pimple.dict().getOrDefault<word>("voidFractionRate", "flux")
+        );
+        if (voidFractionRate != "snapshot" && voidFractionRate != "flux")
+        {
+            FatalIOErrorInFunction(pimple.dict())
+                << "voidFractionRate '" << voidFractionRate << "' in "
+                << pimple.dict().name() << ": allowed are snapshot (eps"
+                << " difference of two steps) and flux (div of the solid"
+                << " volume flux)" << exit(FatalIOError);
+        }
+        const bool voidFractionRateFlux =
+            voidFractionRate == "flux" && particles.active();
+
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+
+            if (pimple.turbCorr())
+            {
+                laminarTransport.correct();
+                turbulence->correct();
+            }
+        }
+
+        particles.checkFinite(runTime);
+
+        // the fields; a failed write (full disk) says so
+        demCoupling::demRestartFile::writeFluid(runTime);
+        if (runTime.writeTime())
+        {
+            particles.writeParticles();
+            particles.writeDemRestart();
+        }
+        particles.report();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    particles.printTimingSplit();
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+// ************************************************************************* //
