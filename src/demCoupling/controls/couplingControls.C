@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "couplingControls.H"
 #include "demEngine.H"
+#include "meshReach.H"
 #include "voidFractionModel.H"
 #include "forceModel.H"
 #include "Switch.H"
@@ -169,7 +170,7 @@ void Foam::demCoupling::couplingControls::checkDem
     // particle leaves the DEM while still in the fluid
     const boundBox demBox(engine.box());
     const boundBox& meshBox = mesh.bounds();
-    const scalar tol = 1e-6*mag(meshBox.span());
+    const scalar tol = reachTolerance*mag(meshBox.span());
     if
     (
         cmptMin(meshBox.min() - demBox.min()) < -tol

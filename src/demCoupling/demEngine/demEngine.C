@@ -4,6 +4,7 @@
 #include "demEngine.H"
 #include "demRestartFile.H"
 #include "demScriptCheck.H"
+#include "meshReach.H"
 #include "IFstream.H"
 #include "Pstream.H"
 #include "mathematicalConstants.H"
@@ -56,12 +57,6 @@ struct fpeTrapsOff
     ~fpeTrapsOff() { feclearexcept(FE_ALL_EXCEPT); feenableexcept(traps); }
 };
 
-
-// Whitespace-separated words of one script line (comments removed)
-MPI_Comm solverComm()
-{
-    return Foam::Pstream::parRun() ? MPI_COMM_WORLD : MPI_COMM_SELF;
-}
 
 } // End anonymous namespace
 

@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "periodicImages.H"
+#include "meshReach.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "Pstream.H"
@@ -62,7 +63,7 @@ Foam::demCoupling::periodicImages::periodicImages(const polyMesh& mesh)
     Pstream::scatterList(all);
 
     const scalar span = mag(bounds_.span());
-    const scalar tol = 1e-6*max(span, SMALL);
+    const scalar tol = reachTolerance*max(span, SMALL);
     DynamicList<vector> basis;
     for (const List<vector>& l : all)
     {

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "particleCloud.H"
+#include "meshReach.H"
 #include "fvcFlux.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
@@ -234,7 +235,7 @@ void Foam::demCoupling::particleCloud::advanceDem()
     engine_->advance(demSteps_);
     if (Pstream::parRun())
     {
-        MPI_Barrier(MPI_COMM_WORLD);
+        MPI_Barrier(solverComm());
     }
     diagnostics_.addDem(diagnostics_.now() - t0);
 }

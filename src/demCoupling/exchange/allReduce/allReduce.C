@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "allReduce.H"
+#include "meshReach.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Pstream.H"
 #include <mpi.h>
@@ -71,7 +72,7 @@ void Foam::demCoupling::particleExchanges::allReduce::distribute
     offsets_.setSize(nRanks);
     MPI_Allgather
     (
-        &nOwned, 1, MPI_INT, counts_.data(), 1, MPI_INT, MPI_COMM_WORLD
+        &nOwned, 1, MPI_INT, counts_.data(), 1, MPI_INT, solverComm()
     );
 
     int total = 0;
@@ -93,7 +94,7 @@ void Foam::demCoupling::particleExchanges::allReduce::distribute
     (
         send.data(), nPacked*nOwned, MPI_DOUBLE,
         all.data(), valueCounts.data(), valueOffsets.data(), MPI_DOUBLE,
-        MPI_COMM_WORLD
+        solverComm()
     );
 
     particles.resize(total);
@@ -122,7 +123,7 @@ void Foam::demCoupling::particleExchanges::allReduce::combine
     MPI_Allreduce
     (
         mine.cdata(), values.data(), int(values.size()), MPI_DOUBLE,
-        mpiOp(op), MPI_COMM_WORLD
+        mpiOp(op), solverComm()
     );
 }
 
@@ -143,7 +144,7 @@ Foam::scalarList Foam::demCoupling::particleExchanges::allReduce::toOwners
     MPI_Allreduce
     (
         values.cdata(), summed.data(), int(values.size()), MPI_DOUBLE,
-        MPI_SUM, MPI_COMM_WORLD
+        MPI_SUM, solverComm()
     );
     const label me = Pstream::myProcNo();
     return scalarList

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "manyToMany.H"
+#include "meshReach.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Pstream.H"
 #include <mpi.h>
@@ -69,14 +70,8 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
         return;
     }
     // Every rank's mesh box and cell-centre box
-    boundBox local(mesh.points(), false);
-    local.inflate(1e-6);
-    boundBox centres(mesh.cellCentres(), false);
-    if (centres.empty())
-    {
-        centres = local;
-    }
-    centres.inflate(1e-6);
+    const boundBox local(meshReachBox(mesh));
+    const boundBox centres(cellCentreReachBox(mesh));
     const double mine[12] =
     {
         local.min().x(), local.min().y(), local.min().z(),
@@ -88,7 +83,7 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
     std::vector<double> all(12*nRanks);
     MPI_Allgather
     (
-        mine, 12, MPI_DOUBLE, all.data(), 12, MPI_DOUBLE, MPI_COMM_WORLD
+        mine, 12, MPI_DOUBLE, all.data(), 12, MPI_DOUBLE, solverComm()
     );
     procBounds_.setSize(nRanks);
     centreBounds_.setSize(nRanks);
@@ -124,7 +119,7 @@ Foam::demCoupling::particleExchanges::manyToMany::backToOwners
     (
         values.cdata(), sendN.cdata(), sendAt.cdata(), MPI_DOUBLE,
         received.data(), recvN.cdata(), recvAt.cdata(), MPI_DOUBLE,
-        MPI_COMM_WORLD
+        solverComm()
     );
 
     scalarList owned(width*nOwned_, identity(op));
@@ -174,7 +169,7 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
     for (label i = 0; i < nOwned_; ++i)
     {
         const point& x = owned.position[i];
-        const scalar R = reachFactor*owned.diameter[i]*(1 + 1e-6);
+        const scalar R = reachFactor*owned.diameter[i]*(1 + reachTolerance);
         const boundBox reach(x - vector::uniform(R), x + vector::uniform(R));
         bool sent = false;
         forAll(procBounds_, r)
@@ -212,7 +207,7 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
     MPI_Alltoall
     (
         sendCounts_.cdata(), 1, MPI_INT, recvCounts_.data(), 1, MPI_INT,
-        MPI_COMM_WORLD
+        solverComm()
     );
     recvOffsets_ = blockOffsets(recvCounts_, 1);
     const label nHeld = recvOffsets_.last() + recvCounts_.last();
@@ -239,7 +234,7 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
     (
         send.data(), sendN.cdata(), sendAt.cdata(), MPI_DOUBLE,
         received.data(), recvN.cdata(), recvAt.cdata(), MPI_DOUBLE,
-        MPI_COMM_WORLD
+        solverComm()
     );
 
     particles.resize(nHeld);
@@ -250,7 +245,7 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
     particles.exchange = this;
 
     int n = nOwned_, total = 0;
-    MPI_Allreduce(&n, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    MPI_Allreduce(&n, &total, 1, MPI_INT, MPI_SUM, solverComm());
     nTotal_ = total;
 }
 
@@ -294,7 +289,7 @@ void Foam::demCoupling::particleExchanges::manyToMany::combine
     (
         send.cdata(), sendN.cdata(), sendAt.cdata(), MPI_DOUBLE,
         values.data(), recvN.cdata(), recvAt.cdata(), MPI_DOUBLE,
-        MPI_COMM_WORLD
+        solverComm()
     );
 }
 
@@ -313,11 +308,6 @@ Foam::scalarList Foam::demCoupling::particleExchanges::manyToMany::toOwners
     return backToOwners(values, width, combineOp::sum);
 }
 
-
-Foam::label Foam::demCoupling::particleExchanges::manyToMany::nHeld() const
-{
-    return recvOffsets_.size() ? recvOffsets_.last() + recvCounts_.last() : 0;
-}
 
 
 // ************************************************************************* //

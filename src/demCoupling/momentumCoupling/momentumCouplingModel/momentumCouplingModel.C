@@ -16,10 +16,8 @@ namespace demCoupling
 Foam::demCoupling::momentumCouplingModel::momentumCouplingModel
 (
     const dictionary&,
-    const fvMesh& mesh
+    const fvMesh&
 )
-:
-    mesh_(mesh)
 {}
 
 

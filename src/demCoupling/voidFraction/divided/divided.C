@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "divided.H"
+#include "meshReach.H"
 #include "addToRunTimeSelectionTable.H"
 #include "particleLocator.H"
 
@@ -67,8 +68,7 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
     const particleData& particles
 )
 {
-    boundBox localBounds(mesh_.points(), false);
-    localBounds.inflate(1e-6);
+    const boundBox localBounds(meshReachBox(mesh_));
 
     // Points per cell (a particle touches few cells: linear search)
     DynamicList<label> cells(8);
@@ -87,26 +87,13 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
 
         // Another processor's particle: only if it (or one of its
         // periodic images) reaches this mesh
-        if (host < 0)
+        if
+        (
+            host < 0
+         && !sphereReaches(localBounds, x0, r, periodic_.shifts())
+        )
         {
-            bool reaches = localBounds.overlaps
-            (
-                boundBox(x0 - vector::uniform(r), x0 + vector::uniform(r))
-            );
-            for (const vector& s : periodic_.shifts())
-            {
-                reaches = reaches || localBounds.overlaps
-                (
-                    boundBox
-                    (
-                        x0 + s - vector::uniform(r), x0 + s + vector::uniform(r)
-                    )
-                );
-            }
-            if (!reaches)
-            {
-                continue;
-            }
+            continue;
         }
 
         cells.clear();

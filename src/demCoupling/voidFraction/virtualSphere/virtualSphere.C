@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "virtualSphere.H"
+#include "meshReach.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -43,7 +44,6 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
             " sphere; seed: 0.25)"
         )
     ),
-    nSpread_(0),
     binOrigin_(Zero),
     binSize_(1),
     binStart_(),
@@ -123,8 +123,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
     }
     particles.combine(spread, combineOp::max);
 
-    boundBox localBounds(mesh_.points(), false);
-    nSpread_ = 0;
+    const boundBox localBounds(meshReachBox(mesh_));
 
     forAll(particles.position, i)
     {
@@ -142,7 +141,6 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
             }
             continue;
         }
-        ++nSpread_;
 
         const point& x0 = particles.position[i];
         const scalar R = 0.5*diameterRatio_*particles.diameter[i];
@@ -156,13 +154,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
         bool haveHost = false;
         const auto collect = [&](const point& x, const bool image)
         {
-            if
-            (
-                !localBounds.overlaps
-                (
-                    boundBox(x - vector::uniform(R), x + vector::uniform(R))
-                )
-            )
+            if (!sphereReaches(localBounds, x, R, List<vector>()))
             {
                 return;
             }
@@ -216,7 +208,6 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
             addCell(i, c, V[c]);
         }
     }
-    reduce(nSpread_, maxOp<label>());
 
     // Weights V_c / V_VS, V_VS summed over processors
     normaliseWeights(particles);
