@@ -207,13 +207,12 @@ def cpu_time(case):
 
 
 def timing_split(case):
-    """interDemFoam's 'Timing split: DEM a s, CFD b s, coupling c s'."""
-    try:
-        for line in open(os.path.join(case, "log.interDemFoam"), errors="replace"):
+    """interDemFoam's or pimpleDemFoam's 'Timing split: DEM a s, CFD b s,
+    coupling c s'."""
+    for log in glob.glob(os.path.join(case, "log.*DemFoam")):
+        for line in open(log, errors="replace"):
             if line.startswith("Timing split"):
                 return line.strip()
-    except OSError:
-        pass
     return ""
 
 
@@ -256,11 +255,13 @@ def positions(path, path_dem):
 SETTLING = [  # name, label, kind
     ("settling-interDemFoam-centre", "interDemFoam, centre void fraction", "idf"),
     ("settling-interDemFoam-divided", "interDemFoam, divided void fraction", "idf"),
+    ("settling-pimpleDemFoam-divided", "pimpleDemFoam (one phase), divided", "idf"),
     ("settling-DPMFoam", "DPMFoam (WenYuDrag)", "dpm"),
 ]
 COLUMN = [  # name, label, kind, closure
     ("column-interDemFoam-Gidaspow", "interDemFoam, GidaspowDrag (Wen-Yu)", "idf", "GidaspowA"),
     ("column-interDemFoam-DiFelice", "interDemFoam, DiFeliceDrag", "idf", "DiFeliceA"),
+    ("column-pimpleDemFoam-Gidaspow", "pimpleDemFoam (one phase), GidaspowDrag", "idf", "GidaspowA"),
     ("column-DPMFoam", "DPMFoam, WenYuDrag", "dpm", "WenYuB"),
 ]
 
@@ -280,7 +281,7 @@ def analyse_settling(run, plt):
             label="reference ODE, Schiller-Naumann ($v_t$ = %.4f m/s)" % vt_ref)
     ax.plot(t_wy, v_wy, color="0.6", ls=":", lw=1.2,
             label="ODE, Wen-Yu at host-cell $\\alpha$ = %.4f" % eps_cell)
-    styles = {"idf": ["r-", "m--"], "dpm": ["b-"]}
+    styles = {"idf": ["r-", "m--", "g-."], "dpm": ["b-"]}
     used = {"idf": 0, "dpm": 0}
     for name, label, kind in SETTLING:
         case = os.path.join(run, name)
@@ -383,7 +384,7 @@ def analyse_column(run, plt):
         law = "DF" if closure == "DiFeliceA" else "SN"
         vt_law, re_t, n_gad, n_rz, v_gad, v_rz = refs[law]
         v_cl = hindered(closure, eps)
-        c = colours[closure]
+        c = "g" if "pimpleDemFoam" in name else colours[closure]
         ax.plot(t, v, c + ("-" if kind == "idf" else "o-"), lw=1.2, ms=3,
                 label=label)
         # window: after the start-up transient, while the lowest particle is
