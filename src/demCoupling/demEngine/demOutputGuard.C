@@ -14,7 +14,7 @@
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const long Foam::demCoupling::demOutputGuard::maxRepeats = 1000;
+const long Foam::demCoupling::demOutputGuard::maxRepeats = 10000;
 
 const long long Foam::demCoupling::demOutputGuard::maxBytesPerCommand =
     64LL*1024*1024;
