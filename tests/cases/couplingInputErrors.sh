@@ -145,6 +145,21 @@ mv 0.0003/liggghts.restart 0.0003/liggghts.restart.kept
 expectError restartNoDemState "Cannot restart at t = 0.0003 s" "0.0003/liggghts.restart"
 mv 0.0003/liggghts.restart.kept 0.0003/liggghts.restart
 
+# The output guard: a script may repeat a line a few thousand times (2880
+# create_atoms lines each print "Created 1 atoms" in benchmarks/dpmFoam):
+# 3000 repeats must run; 12000 (above the guard's 10000) must be stopped
+for i in $(seq 3000); do echo 'print "the same line"'; done >> DEM/in.liggghts
+timeout 120 interDemFoam > log.repeats3000 2>&1 < /dev/null \
+    || fail "repeats3000: 3000 repeated lines stopped the run (log.repeats3000)"
+grep -q "^End" log.repeats3000 || fail "repeats3000: the run did not end"
+[ "$(grep -c '^the same line' log.liggghts)" -ge 3000 ] \
+    || fail "repeats3000: fewer than 3000 repeated lines in log.liggghts"
+echo "ok: repeats3000 (3000 identical lines in a row: the run ends)"
+cp DEM/in.liggghts.good DEM/in.liggghts
+rm -rf 0.000[1-9]*
+for i in $(seq 12000); do echo 'print "the same line"'; done >> DEM/in.liggghts
+expectError repeats12000 "LIGGGHTS wrote the same line more than 10000 times"
+
 # guards that warn and go on, and one that stops
 sed -i 's/^timestep .*/timestep        5e-5/; s/couple_every 10/couple_every 2/' DEM/in.settings
 expectWarning rayleighTime "Rayleigh time" "Use a timestep of at most 20 %"
