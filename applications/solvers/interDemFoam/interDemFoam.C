@@ -52,16 +52,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
 
-    // A restart first verifies the DEM state of its start time (and, with
-    // -restartFromLastComplete, falls back to the latest complete time)
-    {
-        Time startTime(Time::controlDictName, args);
-        demCoupling::demRestartFile::selectStartTime
-        (
-            startTime,
-            args.found("restartFromLastComplete")
-        );
-    }
+    #include "selectDemStartTime.H"
 
     #include "createTime.H"
     #include "createMesh.H"
@@ -75,15 +66,7 @@ int main(int argc, char *argv[])
 
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
-    if (adjustTimeStep)
-    {
-        const scalar dt0 = runTime.deltaTValue();
-        runTime.setDeltaT
-        (
-            particles.wholeDemSteps(dt0, dt0, dt0),
-            !particles.active()
-        );
-    }
+    #include "initialDemDeltaT.H"
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -92,6 +75,8 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         #include "CourantNo.H"
         #include "alphaCourantNo.H"
+        const scalar maxDeltaTFact =
+            min(maxCo/(CoNum + SMALL), maxAlphaCo/(alphaCoNum + SMALL));
         #include "setDemDeltaT.H"
 
         ++runTime;
@@ -101,22 +86,7 @@ int main(int argc, char *argv[])
         // particle-fluid forces, fluid source terms (eps, Ksl, Us, fExplicit)
         particles.evolve();
 
-        // d(eps)/dt in the pressure equation: snapshot (difference of two
-        // eps fields) or flux (div of the particles' solid volume flux)
-        const word voidFractionRate
-        (
-            pimple.dict().getOrDefault<word>("voidFractionRate", "flux")
-        );
-        if (voidFractionRate != "snapshot" && voidFractionRate != "flux")
-        {
-            FatalIOErrorInFunction(pimple.dict())
-                << "voidFractionRate '" << voidFractionRate << "' in "
-                << pimple.dict().name() << ": allowed are snapshot (eps"
-                << " difference of two steps) and flux (div of the solid"
-                << " volume flux)" << exit(FatalIOError);
-        }
-        const bool voidFractionRateFlux =
-            voidFractionRate == "flux" && particles.active();
+        #include "readVoidFractionRate.H"
 
         while (pimple.loop())
         {
@@ -137,18 +107,7 @@ int main(int argc, char *argv[])
             }
         }
 
-        particles.checkFinite(runTime);
-
-        // the fields; a failed write (full disk) says so
-        demCoupling::demRestartFile::writeFluid(runTime);
-        if (runTime.writeTime())
-        {
-            particles.writeParticles();
-            particles.writeDemRestart();
-        }
-        particles.report();
-
-        runTime.printExecutionTime(Info);
+        #include "endDemStep.H"
     }
 
     particles.printTimingSplit();

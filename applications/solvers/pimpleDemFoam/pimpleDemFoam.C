@@ -49,16 +49,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
 
-    // A restart first verifies the DEM state of its start time (and, with
-    // -restartFromLastComplete, falls back to the latest complete time)
-    {
-        Time startTime(Time::controlDictName, args);
-        demCoupling::demRestartFile::selectStartTime
-        (
-            startTime,
-            args.found("restartFromLastComplete")
-        );
-    }
+    #include "selectDemStartTime.H"
 
     #include "createTime.H"
     #include "createMesh.H"
@@ -72,15 +63,7 @@ int main(int argc, char *argv[])
 
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
-    if (adjustTimeStep)
-    {
-        const scalar dt0 = runTime.deltaTValue();
-        runTime.setDeltaT
-        (
-            particles.wholeDemSteps(dt0, dt0, dt0),
-            !particles.active()
-        );
-    }
+    #include "initialDemDeltaT.H"
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -89,26 +72,8 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         #include "CourantNo.H"
 
-        // Courant-limited step, a whole multiple of the DEM step landing
-        // on write and end times (particleCloud::wholeDemSteps)
-        if (adjustTimeStep)
-        {
-            const scalar maxDeltaTFact = maxCo/(CoNum + SMALL);
-            const scalar deltaTFact =
-                min(min(maxDeltaTFact, 1.0 + 0.1*maxDeltaTFact), 1.2);
-            const scalar dtOld = runTime.deltaTValue();
-            runTime.setDeltaT
-            (
-                particles.wholeDemSteps
-                (
-                    min(deltaTFact*dtOld, maxDeltaT),
-                    dtOld,
-                    min(maxDeltaTFact*dtOld, maxDeltaT)
-                ),
-                !particles.active()
-            );
-            Info<< "deltaT = " <<  runTime.deltaTValue() << endl;
-        }
+        const scalar maxDeltaTFact = maxCo/(CoNum + SMALL);
+        #include "setDemDeltaT.H"
 
         ++runTime;
         Info<< "Time = " << runTime.timeName() << nl << endl;
@@ -118,22 +83,7 @@ int main(int argc, char *argv[])
         particles.evolve();
         epsRho == voidfraction*rho;
 
-        // d(eps)/dt in the pressure equation: snapshot (difference of two
-        // eps fields) or flux (div of the particles' solid volume flux)
-        const word voidFractionRate
-        (
-            pimple.dict().getOrDefault<word>("voidFractionRate", "flux")
-        );
-        if (voidFractionRate != "snapshot" && voidFractionRate != "flux")
-        {
-            FatalIOErrorInFunction(pimple.dict())
-                << "voidFractionRate '" << voidFractionRate << "' in "
-                << pimple.dict().name() << ": allowed are snapshot (eps"
-                << " difference of two steps) and flux (div of the solid"
-                << " volume flux)" << exit(FatalIOError);
-        }
-        const bool voidFractionRateFlux =
-            voidFractionRate == "flux" && particles.active();
+        #include "readVoidFractionRate.H"
 
         while (pimple.loop())
         {
@@ -151,18 +101,7 @@ int main(int argc, char *argv[])
             }
         }
 
-        particles.checkFinite(runTime);
-
-        // the fields; a failed write (full disk) says so
-        demCoupling::demRestartFile::writeFluid(runTime);
-        if (runTime.writeTime())
-        {
-            particles.writeParticles();
-            particles.writeDemRestart();
-        }
-        particles.report();
-
-        runTime.printExecutionTime(Info);
+        #include "endDemStep.H"
     }
 
     particles.printTimingSplit();
