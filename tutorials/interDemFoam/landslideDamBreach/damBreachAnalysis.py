@@ -189,19 +189,26 @@ def water_balance(case):
                 error=(vin - vout - vtop - dstore)/max(vin, 1e-30))
 
 
-def lake_level(case):
-    """Bed-normal lake depth at x = 2.975 m: sum of alpha dz over the probe
-    column (probes lakeLevel, 50 mm cells), or None without the probes."""
+def read_probes(case, name, field='alpha.water'):
+    """A probes function object's values: {time: [value per probe]},
+    joined over restarts (empty without the probes)."""
     rows = {}
-    for d in glob.glob(os.path.join(case, 'postProcessing', 'lakeLevel', '*')):
-        f = os.path.join(d, 'alpha.water')
+    for d in glob.glob(os.path.join(case, 'postProcessing', name, '*')):
+        f = os.path.join(d, field)
         if not os.path.isfile(f):
             continue
         for line in open(f):
             if line.startswith('#') or not line.strip():
                 continue
             w = line.split()
-            rows[float(w[0])] = sum(float(a) for a in w[1:])*0.05
+            rows[float(w[0])] = [float(a) for a in w[1:]]
+    return rows
+
+
+def lake_level(case):
+    """Bed-normal lake depth at x = 2.975 m: sum of alpha dz over the probe
+    column (probes lakeLevel, 50 mm cells), or None without the probes."""
+    rows = {t: sum(v)*0.05 for t, v in read_probes(case, 'lakeLevel').items()}
     if len(rows) < 2:
         return None
     t = np.array(sorted(rows))

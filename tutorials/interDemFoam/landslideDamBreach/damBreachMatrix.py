@@ -95,16 +95,7 @@ def smooth_series(t, y, window=SMOOTH):
 
 def toe_seepage(case):
     """First time the toe cell holds water (alpha > 0.5), or None."""
-    rows = {}
-    for d in glob.glob(os.path.join(case, 'postProcessing', 'toeWater', '*')):
-        f = os.path.join(d, 'alpha.water')
-        if not os.path.isfile(f):
-            continue
-        for line in open(f):
-            if line.startswith('#') or not line.strip():
-                continue
-            w = line.split()
-            rows[float(w[0])] = float(w[1])
+    rows = {t: v[0] for t, v in dba.read_probes(case, 'toeWater').items()}
     if not rows:
         return None, False
     t = np.array(sorted(rows))
