@@ -6,6 +6,7 @@
 // message that names the file, the line and what is expected.
 
 #include <gtest/gtest.h>
+#include "testMain.H"
 #include "demScriptCheck.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -14,6 +15,7 @@
 
 using namespace Foam;
 using namespace Foam::demCoupling;
+using testing_demCoupling::errorMessage;
 
 namespace
 {
@@ -37,20 +39,6 @@ void write(const fileName& file, const std::string& text)
     os << text.c_str();
 }
 
-// Message of the Foam::error thrown by f ("" when none)
-template<class F>
-std::string errorMessage(F f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& err)
-    {
-        return err.message();
-    }
-    return "";
-}
 
 const dictionary& couplingDict()
 {

@@ -12,24 +12,7 @@
 
 using namespace Foam;
 using namespace Foam::demCoupling;
-
-namespace
-{
-// Message of the Foam::error thrown by f
-template<class F>
-std::string errorMessage(F f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& err)
-    {
-        return err.message();
-    }
-    return "";
-}
-}
+using testing_demCoupling::errorMessage;
 
 
 TEST(modelSelection, UnknownVoidFractionListsValidModels)
