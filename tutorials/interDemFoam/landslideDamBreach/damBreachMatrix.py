@@ -564,35 +564,39 @@ def main(out, scale, cases):
         f.write('# Landslide dam breach, %s scale: the eight scenarios (seed '
                 'Table 2); written by damBreachAnalysis.py matrix\n' % scale)
         f.write('# inflow_m3s: Table 2 (0.5 m flume)%s; t_overtop_s -1: no '
-                'overtopping; wall_s: the run on one core\n'
+                'overtopping; wall_s: the run on one core (other runs may have '
+                'shared the machine); cpu_s: its CPU time (ExecutionTime)\n'
                 % ('; the 0.1 m slice carries 1/5 of it' if scale == 'small'
                    else ''))
         f.write('# scenario inflow_m3s material H0_m Hres_m t_overtop_s '
-                'E_end grains_out wall_s\n')
+                'E_end grains_out wall_s cpu_s\n')
         for n in SCENARIOS:
             if n not in runs:
                 continue
             r = runs[n]
-            f.write('%-8s %.3f %s %.4f %.4f %.1f %.3f %d %.0f\n'
+            f.write('%-8s %.3f %s %.4f %.4f %.1f %.3f %d %.0f %.0f\n'
                     % (n, r.inflow, r.material, r.H0, r.Hres, r.t_over,
-                       r.E_end, r.grains_out, r.wall))
+                       r.E_end, r.grains_out, r.wall, cpu_time(r.case)))
     print(open(path).read())
 
     path = os.path.join(out, 'phases.%s.dat' % scale)
     with open(path, 'w') as f:
         f.write('# start of each phase [s] (-: not reached); end: rebalance '
-                'or complete failure\n# scenario seepage_at_toe overtopping '
-                'toe_erosion backward_erosion head_cut end end_kind\n')
+                'or complete failure; ended: the dam height changed by less than '
+                '5 mm over the last 20 s (change_mm)\n# scenario seepage_at_toe '
+                'overtopping toe_erosion backward_erosion head_cut end end_kind '
+                'end_time_s change_mm ended\n')
         for n in SCENARIOS:
             if n not in runs:
                 continue
             r = runs[n]
-            f.write('%-8s %s %s %s %s %s %s %s\n'
+            f.write('%-8s %s %s %s %s %s %s %s %.0f %.1f %s\n'
                     % (n, fmt(r.t_seep, '%.1f'),
                        fmt(r.t_over if r.t_over >= 0 else None, '%.1f'),
                        fmt(r.t_toe, '%.1f'), fmt(r.t_back, '%.1f'),
                        fmt(r.t_head, '%.1f'), fmt(r.t_end, '%.1f'),
-                       'failure' if r.failed else 'rebalance'))
+                       'failure' if r.failed else 'rebalance', r.t[-1],
+                       1000*r.ended_change, 'yes' if r.ended else 'no'))
     print(open(path).read())
 
     res = findings(runs)
