@@ -11,6 +11,7 @@
 #   - the DEM script does not exist
 #   - an unknown voidFraction / momentumCoupling / force model (the valid
 #     names are listed)
+#   - a restart from a time at which every particle had left (no DEM state)
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 
@@ -63,7 +64,7 @@ expectWarning()
     cp DEM/in.settings.good DEM/in.settings
     cp couplingProperties.good constant/couplingProperties
     cp controlDict.good system/controlDict
-    rm -rf 0.000[1-9]*
+    [ -n "$keepTimes" ] || rm -rf 0.000[1-9]*
 }
 
 # the well-set case runs (else the errors below would prove nothing)
@@ -181,9 +182,18 @@ expectWarning outsideDeleted "Deleted 1 particle(s) outside the fluid mesh" "Par
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.3 units box/' DEM/in.liggghts
 sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.25 units box/' DEM/in.liggghts
 echo "outsideParticles delete;" >> constant/couplingProperties
-expectWarning outsideDeletedAll "Deleted 1 particle(s) outside the fluid mesh" "Particles: 0 in the DEM"
+keepTimes=yes expectWarning outsideDeletedAll "Deleted 1 particle(s) outside the fluid mesh" "Particles: 0 in the DEM"
 ! grep -q "left the DEM domain" log.outsideDeletedAll \
     || fail "outsideDeletedAll: a deletion was also reported as a loss of LIGGGHTS"
+# no DEM restart file when the DEM is empty: a marker says why, and a
+# restart from that time stops with that reason (not a generic "missing")
+[ -f 0.0003/liggghts.restart.emptied ] && [ ! -f 0.0003/liggghts.restart ] \
+    || fail "outsideDeletedAll: no 0.0003/liggghts.restart.emptied marker"
+setEntry system/controlDict startFrom latestTime
+setEntry system/controlDict endTime 5e-4
+expectError restartEmptied "every DEM particle had left the domain" \
+    "liggghts.restart.emptied" "Cannot restart at t = 0.0003"
+rm -rf 0.000[1-9]*
 
 sed -i 's/^velocity .*/velocity        all set 0 0 -1e400 units box/' DEM/in.liggghts
 expectError nonFiniteParticle "non-finite position" "DEM blew up"

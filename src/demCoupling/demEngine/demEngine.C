@@ -335,12 +335,14 @@ Foam::boundBox Foam::demCoupling::demEngine::box() const
 void Foam::demCoupling::demEngine::writeRestart(const Time& runTime)
 {
     // An emptied DEM cannot be written either (LIGGGHTS's write_restart
-    // sets the system up and stops on it): a later restart from this time
-    // says that the DEM state is missing
-    if (emptied_)
+    // sets the system up and stops on it): a marker file says so, and a
+    // later restart from this time says why there is no DEM state
+    if (emptied_ || (started_ && !inserts_ && nParticles() == 0))
     {
+        demRestartFile(runTime, runTime.timeName()).markEmptied(runTime);
         Info<< "DEM: no particle left, no DEM restart file written at t = "
-            << runTime.timeName() << " s" << endl;
+            << runTime.timeName() << " s (" << "liggghts.restart.emptied"
+            << " says so)" << endl;
         return;
     }
     // Written to a temporary name, checked, then renamed, and the check

@@ -12,6 +12,7 @@
 #include "SHA1.H"
 #include "IOobject.H"
 #include "IOdictionary.H"
+#include "OFstream.H"
 
 #include <fstream>
 #include <sstream>
@@ -317,10 +318,37 @@ void Foam::demCoupling::demRestartFile::writeFluid(Time& runTime)
 }
 
 
+void Foam::demCoupling::demRestartFile::markEmptied(const Time& runTime) const
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    mkDir(file_.path());
+    OFstream os(emptiedFile());
+    os  << "// interDemFoam: no DEM restart file at t = " << timeName_
+        << " s: every DEM particle had left the domain" << nl
+        << "time        " << timeName_ << ';' << nl
+        << "particles   0;" << nl;
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Cannot write " << emptiedFile() << exit(FatalError);
+    }
+}
+
+
 std::string Foam::demCoupling::demRestartFile::problem() const
 {
     if (!isFile(file_))
     {
+        if (isFile(emptiedFile()))
+        {
+            return "there is none: every DEM particle had left the domain by"
+                " this time (" + emptiedFile().name() + "), and an empty DEM"
+                " has no state to continue from; the particles' part of this"
+                " run has ended";
+        }
         if (exists(writingFile(), false, false))
         {
             return "it is missing; a partial " + writingFile().name()

@@ -358,6 +358,16 @@ def ended(case, window, tolerance, max_time):
     dumps = dump_files(case, 'particles')
     if not dumps:
         sys.exit('damBreachAnalysis: no dumps in %s/post' % case)
+    # every grain gone: the solver writes <time>/liggghts.restart.emptied
+    # instead of a DEM state, and nothing is left to erode
+    emptied = sorted(glob.glob(os.path.join(case, '[0-9]*',
+                                            'liggghts.restart.emptied'))
+                     + glob.glob(os.path.join(case, 'processor0', '[0-9]*',
+                                              'liggghts.restart.emptied')))
+    if emptied:
+        print('%s: every grain has left the flume (%s): the breach has ended'
+              % (case, os.path.relpath(emptied[0], case)))
+        return True
     t_end = dumps[-1][0]
     if t_end < window + 2.0:
         print('%s: %.1f s run, shorter than the %g s window: not ended'
