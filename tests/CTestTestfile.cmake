@@ -64,6 +64,18 @@ set_tests_properties(case.packedBedSinglePhase PROPERTIES LABELS "case;coupled;f
 add_test(case.fluidizedBedAlpha "bash" "cases/packedBed.sh" "fluidize")
 set_tests_properties(case.fluidizedBedAlpha PROPERTIES LABELS "case;coupled" TIMEOUT 600)
 
+# interFoam parity: semi-implicit MULES and sub-cycles carry eps (alpha = 1
+# kept, water conserved with particles moving, settling as in eq. 19), and
+# OpenFOAM's own damBreak runs unchanged with interDemFoam as with interFoam
+add_test(case.fluidizedBedSubCycled "bash" "cases/packedBed.sh" "fluidizeSubCycled")
+set_tests_properties(case.fluidizedBedSubCycled PROPERTIES LABELS "case;coupled;alpha" TIMEOUT 600)
+add_test(case.settlingSubCycled "bash" "cases/singleParticleSettling.sh" "subCycled")
+set_tests_properties(case.settlingSubCycled PROPERTIES LABELS "case;coupled;alpha" TIMEOUT 600)
+add_test(case.closedBoxSubCycled "bash" "cases/closedBoxConservation.sh" "subCycled")
+set_tests_properties(case.closedBoxSubCycled PROPERTIES LABELS "case;alpha" TIMEOUT 600)
+add_test(case.interFoamParity "bash" "cases/interFoamParity.sh")
+set_tests_properties(case.interFoamParity PROPERTIES LABELS "case;alpha" TIMEOUT 600)
+
 # Restart: killed with SIGKILL, restarted from latestTime, same end state as
 # an uninterrupted run; a packing at rest stays at rest across a restart
 add_test(case.restart "bash" "cases/restart.sh")

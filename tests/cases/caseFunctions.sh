@@ -87,6 +87,21 @@ maxRelativeDrift()
     } END { if (bad || !n) { print "nan"; exit 1 } printf "%.3e\n", m }' "$1"
 }
 
+# Semi-implicit MULES (an implicit upwind predictor, then the limited
+# high-order correction) and sub-cycles for the phase fraction, as in
+# OpenFOAM's own damBreak: semiImplicitAlpha <nAlphaSubCycles>
+semiImplicitAlpha()
+{
+    local key='solvers/"alpha.water.*"'
+    setEntry system/fvSolution "$key/MULESCorr" yes
+    setEntry system/fvSolution "$key/nAlphaSubCycles" "$1"
+    setEntry system/fvSolution "$key/solver" smoothSolver
+    setEntry system/fvSolution "$key/smoother" symGaussSeidel
+    setEntry system/fvSolution "$key/tolerance" 1e-12
+    setEntry system/fvSolution "$key/relTol" 0
+    setEntry system/fvSolution "$key/nLimiterIter" 5
+}
+
 # The singleParticleSettling tutorial narrowed to one 20 mm column
 # (5 x 5 x 50 cells of 4 mm), the particle on its axis: run in the case
 narrowSettlingColumn()

@@ -22,6 +22,8 @@
 #   packedBed.sh fluidize: the bed released at 30 mm/s (above U_mf): water
 #   fills the column, so alpha must stay 1 (to 1e-6) while eps changes every
 #   step, and the water volume sum(eps alpha V) must not change.
+#   packedBed.sh fluidizeSubCycled: the same with the phase fraction
+#   semi-implicit (MULESCorr yes) and 3 sub-cycles per step.
 . "$(dirname "$0")/caseFunctions.sh"
 law="${1:-GidaspowDrag}"
 secondSolver="${2:-}"
@@ -38,6 +40,12 @@ liggghts -in DEM/in.pour -var width 0.012 -var nBeads 825 -echo none \
 
 cp -r 0.orig 0
 
+if [ "$law" = fluidizeSubCycled ]
+then
+    # the same check with the phase fraction semi-implicit, 3 sub-cycles
+    semiImplicitAlpha 3
+    law=fluidize
+fi
 if [ "$law" = fluidize ]
 then
     printf '(\n    (0 (0 0 0.03))\n    (1 (0 0 0.03))\n)\n' > constant/inletVelocity

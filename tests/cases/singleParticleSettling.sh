@@ -10,12 +10,14 @@
 #   one cell below the surface on, within 5 %.
 # The tutorial's box is narrowed to one 20 mm column (5 x 5 x 50 cells) to
 # keep the test short; the walls are 10 particle diameters away.
-#   singleParticleSettling.sh serial|parallel|adjustable|explicit
+#   singleParticleSettling.sh serial|parallel|adjustable|explicit|subCycled
 # parallel:   METIS splits the case into 2, mpirun -np 2 (the particle moves
 #             from one subdomain into the other), reconstructPar
 # adjustable: adjustTimeStep yes (maxDeltaT 5e-4): every CFD step must be a
 #             whole number of DEM steps
 # explicit:   momentumCoupling explicit (the others use semiImplicit)
+# subCycled:  the phase fraction semi-implicit (MULESCorr yes) with 3
+#             sub-cycles per step: the same checks, the water volume too
 # Also checks the water volume sum(eps alpha V) stays constant (1e-6) while
 # the particle enters the water, and the fluid force at water entry: its
 # peak between 0.5 and 1.05 of eq. 19's sharp-interface peak and no
@@ -56,6 +58,11 @@ if [ "$mode" = adjustable ]
 then
     setEntry system/controlDict adjustTimeStep yes
     setEntry system/controlDict maxDeltaT 5e-4
+fi
+
+if [ "$mode" = subCycled ]
+then
+    semiImplicitAlpha 3
 fi
 
 if [ "$mode" = explicit ]

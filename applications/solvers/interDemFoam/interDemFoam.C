@@ -25,6 +25,8 @@ Description
 #include "fvCFD.H"
 #include "CMULES.H"
 #include "EulerDdtScheme.H"
+#include "gaussConvectionScheme.H"
+#include "upwind.H"
 #include "subCycle.H"
 #include "immiscibleIncompressibleTwoPhaseMixture.H"
 #include "turbulentTransportModel.H"
@@ -91,7 +93,7 @@ int main(int argc, char *argv[])
         while (pimple.loop())
         {
             #include "alphaControls.H"
-            #include "alphaEqn.H"
+            #include "alphaEqnSubCycle.H"
             mixture.correct();
 
             #include "UEqn.H"

@@ -591,7 +591,6 @@ void Foam::demCoupling::demEngine::ownedParticles(particleData& owned)
         owned.cell[i] = -1;
         owned.hostProc[i] = -1;
     }
-    owned.exchange = nullptr;
     nOwned_ = nLocal;
 }
 

@@ -114,7 +114,8 @@ Foam::demCoupling::fluidSampler::sample
     const voidFractionModel& vf,
     const fluidView& fluid,
     const volScalarField& voidfraction,
-    const particleData& particles
+    const particleData& particles,
+    const particleCombine& combine
 ) const
 {
     const label n = particles.size();
@@ -177,7 +178,7 @@ Foam::demCoupling::fluidSampler::sample
     {
         pack(states[i], &sums[w*i]);
     }
-    particles.combine(sums, w, combineOp::sum);
+    combine.combine(sums, w, combineOp::sum);
     forAll(states, i)
     {
         particleFluidState& s = states[i];

@@ -136,7 +136,11 @@ Foam::label Foam::demCoupling::particleLocator::findCellNear
 }
 
 
-void Foam::demCoupling::particleLocator::locate(particleData& particles)
+void Foam::demCoupling::particleLocator::locate
+(
+    particleData& particles,
+    const particleCombine& combine
+)
 {
     const label n = particles.size();
     hintHits_ = 0;
@@ -193,7 +197,7 @@ void Foam::demCoupling::particleLocator::locate(particleData& particles)
     {
         host[i] = particles.cell[i] >= 0 ? me : nProcs + me;
     }
-    particles.combine(host, combineOp::min);
+    combine.combine(host, combineOp::min);
 
     DynamicList<label> lostTags;
     forAll(host, i)

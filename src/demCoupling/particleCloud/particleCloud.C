@@ -276,12 +276,12 @@ void Foam::demCoupling::particleCloud::updateParticles()
 
     const scalar t0 = diagnostics_.now();
     const scalar x0 = exchange_->seconds();
-    locator_->locate(particles_);
+    locator_->locate(particles_, exchange_());
     const scalar t1 = diagnostics_.now();
     const scalar x1 = exchange_->seconds();
     diagnostics_.addLocate((t1 - t0) - (x1 - x0));
 
-    voidFraction_->update(particles_, voidfraction_);
+    voidFraction_->update(particles_, exchange_(), voidfraction_);
     diagnostics_.addVoidFraction
     (
         (diagnostics_.now() - t1) - (exchange_->seconds() - x1)
@@ -343,7 +343,7 @@ void Foam::demCoupling::particleCloud::sampleFluid()
 {
     states_ = sampler_->sample
     (
-        voidFraction_(), fluid_, voidfraction_, particles_
+        voidFraction_(), fluid_, voidfraction_, particles_, exchange_()
     );
 }
 

@@ -74,7 +74,7 @@ TEST(particleLocator, AgreesWithBruteForceAndFollowsParticles)
     particleLocator locator(mesh);
     particleData p = randomParticles(mesh, 200, 7);
 
-    locator.locate(p);
+    locator.locate(p, particleCombine());
     forAll(p.position, i)
     {
         EXPECT_EQ(p.cell[i], bruteForceCell(mesh, p.position[i])) << i;
@@ -94,7 +94,7 @@ TEST(particleLocator, AgreesWithBruteForceAndFollowsParticles)
         p.position[i] = max(min(p.position[i], bb.max() - vector::uniform(1e-9)),
                             bb.min() + vector::uniform(1e-9));
     }
-    locator.locate(p);
+    locator.locate(p, particleCombine());
     forAll(p.position, i)
     {
         EXPECT_EQ(p.cell[i], bruteForceCell(mesh, p.position[i])) << i;
@@ -110,7 +110,7 @@ TEST(particleLocator, CountsParticlesOutsideTheMesh)
     particleData p = randomParticles(mesh, 10, 3);
     p.position[2] = point(0.5, 0.005, 0.005);      // 0.5 m off a 1 cm cube
     p.position[7] = point(0.005, 0.005, -0.001);   // just below the bottom
-    locator.locate(p);
+    locator.locate(p, particleCombine());
     EXPECT_EQ(locator.lost(), 2);
     EXPECT_EQ(p.cell[2], -1);
     EXPECT_EQ(p.cell[7], -1);
@@ -150,7 +150,7 @@ TEST_P(momentumCouplingTest, FluidReceivesMinusTheParticleForce)
     const fvMesh& mesh = testing_demCoupling::mesh();
     particleData p = randomParticles(mesh, 30, 11);
     particleLocator locator(mesh);
-    locator.locate(p);
+    locator.locate(p, particleCombine());
 
     dictionary dict;
     dict.add("voidFraction", "centre");
@@ -160,7 +160,7 @@ TEST_P(momentumCouplingTest, FluidReceivesMinusTheParticleForce)
     autoPtr<momentumCouplingModel> mc(momentumCouplingModel::New(dict, mesh));
 
     auto eps = newField(mesh, "eps", dimensionedScalar("one", dimless, 1.0));
-    vf->update(p, eps.ref());
+    vf->update(p, particleCombine(), eps.ref());
 
     Random rnd(5);
     scalarList K(p.size());

@@ -68,7 +68,7 @@ TEST(centreVoidFraction, ConservesParticleVolume)
 
     auto model = voidFractionModel::New(modelDict("centre", 0.05), mesh);
     auto eps = newEps(mesh);
-    model->update(p, *eps);
+    model->update(p, particleCombine(), *eps);
 
     scalar Vp = 0;
     forAll(p.diameter, i) { Vp += p.volume(i); }
@@ -102,12 +102,12 @@ TEST(centreVoidFraction, FloorIsAppliedAndCounted)
     auto eps = newEps(mesh);
 
     auto loose = voidFractionModel::New(modelDict("centre", 0.2), mesh);
-    loose->update(p, *eps);
+    loose->update(p, particleCombine(), *eps);
     EXPECT_NEAR((*eps)[62], 1 - constant::mathematical::pi/6, 1e-12);
     EXPECT_EQ(loose->floorHits(), 0);
 
     auto tight = voidFractionModel::New(modelDict("centre", 0.6), mesh);
-    tight->update(p, *eps);
+    tight->update(p, particleCombine(), *eps);
     EXPECT_DOUBLE_EQ((*eps)[62], 0.6);
     EXPECT_EQ(tight->floorHits(), 1);
     EXPECT_EQ(tight->totalFloorHits(), 1);
@@ -126,7 +126,7 @@ TEST(centreVoidFraction, ParticleOutsideMeshIsSkipped)
 
     auto model = voidFractionModel::New(modelDict("centre", 0.2), mesh);
     auto eps = newEps(mesh);
-    model->update(p, *eps);
+    model->update(p, particleCombine(), *eps);
     EXPECT_DOUBLE_EQ(gMin(eps->primitiveField()), 1.0);
 }
 
@@ -141,7 +141,7 @@ TEST(dividedVoidFraction, ConservesVolumeAndSplitsAcrossFaces)
     const particleData p = randomParticles(mesh, 40, 0.1*dx, 0.5*dx);
     auto model = voidFractionModel::New(modelDict("divided", 0.05), mesh);
     auto eps = newEps(mesh);
-    model->update(p, *eps);
+    model->update(p, particleCombine(), *eps);
 
     scalar Vp = 0;
     forAll(p.diameter, i)
@@ -158,7 +158,7 @@ TEST(dividedVoidFraction, ConservesVolumeAndSplitsAcrossFaces)
     q.cell[0] = 62;
     q.hostProc[0] = 0;
     q.diameter[0] = 0.5*dx;
-    model->update(q, *eps);
+    model->update(q, particleCombine(), *eps);
     ASSERT_EQ(model->cells(0).size(), 1);
     EXPECT_EQ(model->cells(0)[0], 62);
 
@@ -168,7 +168,7 @@ TEST(dividedVoidFraction, ConservesVolumeAndSplitsAcrossFaces)
     const scalar r = 0.5*dx;
     q.diameter[0] = 2*r;
     q.position[0] = mesh.C()[62] + vector(0.5*dx - 0.5*r, 0, 0);
-    model->update(q, *eps);
+    model->update(q, particleCombine(), *eps);
     const label across = mesh.findCell(mesh.C()[62] + vector(dx, 0, 0));
     scalar wAcross = 0;
     forAll(model->cells(0), k)
@@ -239,7 +239,7 @@ TEST(voidFractionModels, ConserveVolumeForParticlesUpToTwoCells)
         const particleData p = randomParticles(mesh, 12, 0.1*dx, 2*dx);
         auto vf = voidFractionModel::New(anyModelDict(model, 1e-6), mesh);
         auto eps = newEps(mesh);
-        vf->update(p, *eps);
+        vf->update(p, particleCombine(), *eps);
 
         scalar Vp = 0, Vweighted = 0;
         forAll(p.diameter, i)
@@ -259,7 +259,7 @@ TEST(voidFractionModels, ConserveVolumeForParticlesUpToTwoCells)
             one.diameter[0] = p.diameter[i];
             one.cell[0] = p.cell[i];
             one.hostProc[0] = 0;
-            vf->update(one, *eps);
+            vf->update(one, particleCombine(), *eps);
             if (vf->floorHits() == 0)
             {
                 EXPECT_NEAR
@@ -296,7 +296,7 @@ TEST(virtualSphereVoidFraction, CellSetStraddlingCellsAndNearAWall)
         p.cell[0] = mesh.findCell(x);
         p.hostProc[0] = 0;
         ASSERT_GE(p.cell[0], 0);
-        vf->update(p, *eps);
+        vf->update(p, particleCombine(), *eps);
 
         const labelHashSet expected
         (
@@ -327,7 +327,7 @@ TEST(virtualSphereVoidFraction, CellSetStraddlingCellsAndNearAWall)
         p.diameter[0] = 0.6*dx;
         p.cell[0] = mesh.findCell(corner);
         p.hostProc[0] = 0;
-        vf->update(p, *eps);
+        vf->update(p, particleCombine(), *eps);
         EXPECT_EQ(vf->cells(0).size(), 8);
     }
 
@@ -339,7 +339,7 @@ TEST(virtualSphereVoidFraction, CellSetStraddlingCellsAndNearAWall)
         p.diameter[0] = 0.2*dx;
         p.cell[0] = mesh.findCell(p.position[0]);
         p.hostProc[0] = 0;
-        vf->update(p, *eps);
+        vf->update(p, particleCombine(), *eps);
         ASSERT_EQ(vf->cells(0).size(), 1);
         EXPECT_EQ(vf->cells(0)[0], p.cell[0]);
     }
@@ -368,7 +368,7 @@ TEST(voidFractionModels, SpreadConservesAndSampleIsItsAdjoint)
     {
         const particleData p = randomParticles(mesh, 15, 0.2*dx, 1.5*dx);
         auto vf = voidFractionModel::New(anyModelDict(model, 1e-6), mesh);
-        vf->update(p, *newEps(mesh));
+        vf->update(p, particleCombine(), *newEps(mesh));
 
         scalarList X(p.size());
         forAll(X, i) { X[i] = 1 + rnd.sample01<scalar>(); }
@@ -401,7 +401,7 @@ TEST(diffusionVoidFraction, SpreadsSymmetricallyAndConserves)
     p.cell[0] = 62;
     p.hostProc[0] = 0;
     p.diameter[0] = dx;
-    vf->update(p, *eps);
+    vf->update(p, particleCombine(), *eps);
 
     const scalarField solid(1 - eps->primitiveField());
     const labelList& nbrs = mesh.cellCells()[62];

@@ -102,7 +102,6 @@ void Foam::demCoupling::particleExchanges::allReduce::distribute
     {
         unpack(&all[nPacked*i], particles, i);
     }
-    particles.exchange = this;
     nTotal_ = total;
 }
 

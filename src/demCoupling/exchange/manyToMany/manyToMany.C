@@ -242,7 +242,6 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
     {
         unpack(&received[nPacked*i], particles, i);
     }
-    particles.exchange = this;
 
     int n = nOwned_, total = 0;
     MPI_Allreduce(&n, &total, 1, MPI_INT, MPI_SUM, solverComm());

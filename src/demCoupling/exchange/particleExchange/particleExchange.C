@@ -62,17 +62,6 @@ Foam::demCoupling::particleExchange::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-Foam::scalar Foam::demCoupling::particleExchange::identity
-(
-    const combineOp op
-)
-{
-    return op == combineOp::sum ? 0
-         : op == combineOp::min ? GREAT
-         : -GREAT;
-}
-
-
 void Foam::demCoupling::particleExchange::pack
 (
     const particleData& p,
@@ -128,7 +117,6 @@ void Foam::demCoupling::particleExchange::copyOwned
 )
 {
     particles = owned;
-    particles.exchange = this;
     nTotal_ = owned.size();
 }
 

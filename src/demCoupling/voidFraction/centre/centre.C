@@ -29,7 +29,8 @@ Foam::demCoupling::voidFractionModels::centre::centre
 
 void Foam::demCoupling::voidFractionModels::centre::distribute
 (
-    const particleData& particles
+    const particleData& particles,
+    const particleCombine& combine
 )
 {
     forAll(particles.cell, i)

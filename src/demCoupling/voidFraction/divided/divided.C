@@ -65,7 +65,8 @@ Foam::demCoupling::voidFractionModels::divided::divided
 
 void Foam::demCoupling::voidFractionModels::divided::distribute
 (
-    const particleData& particles
+    const particleData& particles,
+    const particleCombine& combine
 )
 {
     const boundBox localBounds(meshReachBox(mesh_));
@@ -153,7 +154,7 @@ void Foam::demCoupling::voidFractionModels::divided::distribute
 
     // A point outside every processor's mesh (beyond a wall; beyond a
     // cyclic patch it lands on the periodic image) is left out
-    normaliseWeights(particles);
+    normaliseWeights(particles, combine);
 }
 
 

@@ -101,7 +101,8 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
 
 void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
 (
-    const particleData& particles
+    const particleData& particles,
+    const particleCombine& combine
 )
 {
     const label n = particles.size();
@@ -121,7 +122,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
             spread[i] = 1;
         }
     }
-    particles.combine(spread, combineOp::max);
+    combine.combine(spread, combineOp::max);
 
     const boundBox localBounds(meshReachBox(mesh_));
 
@@ -210,7 +211,7 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
     }
 
     // Weights V_c / V_VS, V_VS summed over processors
-    normaliseWeights(particles);
+    normaliseWeights(particles, combine);
 }
 
 

@@ -69,7 +69,8 @@ Foam::demCoupling::voidFractionModel::New
 
 void Foam::demCoupling::voidFractionModel::normaliseWeights
 (
-    const particleData& particles
+    const particleData& particles,
+    const particleCombine& combine
 )
 {
     closeCells();
@@ -82,7 +83,7 @@ void Foam::demCoupling::voidFractionModel::normaliseWeights
             total[i] += weightList_[k];
         }
     }
-    particles.combine(total, 1, combineOp::sum);
+    combine.combine(total, 1, combineOp::sum);
     for (label i = 0; i < n; ++i)
     {
         if (total[i] > 0)
@@ -108,6 +109,7 @@ void Foam::demCoupling::voidFractionModel::closeCells()
 void Foam::demCoupling::voidFractionModel::update
 (
     const particleData& particles,
+    const particleCombine& combine,
     volScalarField& eps
 )
 {
@@ -116,7 +118,7 @@ void Foam::demCoupling::voidFractionModel::update
     cellList_.clear();
     weightList_.clear();
     lastAdded_ = 0;     // particle 0 starts at 0
-    distribute(particles);
+    distribute(particles, combine);
     closeCells();
 
     scalarList Vp(particles.size());

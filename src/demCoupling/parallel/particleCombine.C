@@ -1,14 +1,24 @@
 // interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
-#include "particleData.H"
-#include "particleExchange.H"
+#include "particleCombine.H"
 #include "Pstream.H"
 #include "ops.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-void Foam::demCoupling::particleData::combine
+Foam::scalar Foam::demCoupling::particleCombine::identity
+(
+    const combineOp op
+)
+{
+    return op == combineOp::sum ? 0
+         : op == combineOp::min ? GREAT
+         : -GREAT;
+}
+
+
+void Foam::demCoupling::particleCombine::combine
 (
     scalarList& values,
     const label width,
@@ -19,16 +29,7 @@ void Foam::demCoupling::particleData::combine
     {
         return;   // one rank holds every particle: nothing to combine
     }
-    if (exchange)
-    {
-        exchange->combine(values, width, op);
-        return;
-    }
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-    // Filled by hand: every rank holds the same whole list
+    // Every rank holds the same whole list
     switch (op)
     {
         case combineOp::sum:
@@ -45,7 +46,7 @@ void Foam::demCoupling::particleData::combine
 }
 
 
-void Foam::demCoupling::particleData::combine
+void Foam::demCoupling::particleCombine::combine
 (
     labelList& values,
     const combineOp op
@@ -55,7 +56,6 @@ void Foam::demCoupling::particleData::combine
     {
         return;
     }
-    // Labels travel as doubles: exact up to 2^53
     scalarList v(values.size());
     forAll(values, i)
     {
