@@ -35,6 +35,7 @@ Description
 #include "particleCloud.H"
 #include "twoPhaseFluidView.H"
 #include "demRestartFile.H"
+#include "cfdStageTimes.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 
@@ -70,6 +71,15 @@ int main(int argc, char *argv[])
     #include "setInitialDeltaT.H"
     #include "initialDemDeltaT.H"
 
+    // Wall time of the CFD's stages, printed with the timing split
+    demCoupling::cfdStageTimes cfdTimes
+    (
+        {
+            "phaseFraction", "continuityCorrection", "momentum", "pressure",
+            "other"
+        }
+    );
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -87,6 +97,7 @@ int main(int argc, char *argv[])
         // Coupling step: DEM advance, particle data, void fraction,
         // particle-fluid forces, fluid source terms (eps, Ksl, Us, fExplicit)
         particles.evolve();
+        cfdTimes.restart();
 
         #include "readVoidFractionRate.H"
 
@@ -95,13 +106,16 @@ int main(int argc, char *argv[])
             #include "alphaControls.H"
             #include "alphaEqnSubCycle.H"
             mixture.correct();
+            cfdTimes.mark("phaseFraction");
 
             #include "UEqn.H"
+            cfdTimes.mark("momentum");
 
             while (pimple.correct())
             {
                 #include "pEqn.H"
             }
+            cfdTimes.mark("pressure");
 
             if (pimple.turbCorr())
             {
@@ -110,9 +124,12 @@ int main(int argc, char *argv[])
         }
 
         #include "endDemStep.H"
+        cfdTimes.mark("other");
+        cfdTimes.endStep();
     }
 
     particles.printTimingSplit();
+    cfdTimes.print(mesh);
 
     Info<< "End\n" << endl;
 
