@@ -18,6 +18,10 @@
                                               the findings, Figs. 8-11
     damBreachAnalysis.py coarseness DIR SCALE CASE...
                                               the variants' chart
+    damBreachAnalysis.py shields DIR SCALE CASE...
+                                              the Shields number on the
+                                              downstream face during
+                                              overtopping (damBreachShields.py)
 
 Reads the DEM dumps CASE/post/particles.<step>.txt and contacts.<step>.txt
 (DEM/in.dam writes them; step x demDt is the time, demDt the DEM step of
@@ -729,6 +733,10 @@ if __name__ == '__main__':
         import damBreachMatrix
         sys.exit(damBreachMatrix.coarseness(sys.argv[2], sys.argv[3],
                                             sys.argv[4:]))
+    elif len(sys.argv) >= 5 and sys.argv[1] == 'shields':
+        import damBreachShields
+        sys.exit(damBreachShields.main(sys.argv[2], sys.argv[3],
+                                       sys.argv[4:]))
     elif len(sys.argv) >= 4 and sys.argv[1] == 'compare':
         compare(sys.argv[2], sys.argv[3:])
     elif len(sys.argv) == 2:
