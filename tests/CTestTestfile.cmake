@@ -150,3 +150,9 @@ set_tests_properties(case.quietBed PROPERTIES LABELS "case;coupled;forces" TIMEO
 # (negative control) the transport check must fail
 add_test(case.bedload "bash" "cases/bedload.sh")
 set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 300)
+
+# The scene check before a run (checkDemScene): a measured failure region
+# (centre at dx = d), a safe scene, a coupling step in explicit drag's
+# blow-up region, a missing DEM script
+add_test(case.checkScene "bash" "cases/checkScene.sh")
+set_tests_properties(case.checkScene PROPERTIES LABELS "case;input" TIMEOUT 300)

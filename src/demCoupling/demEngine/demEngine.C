@@ -109,7 +109,8 @@ Foam::fileName Foam::demCoupling::demEngine::restartFile
 Foam::demCoupling::demEngine::demEngine
 (
     const dictionary& couplingDict,
-    const Time& runTime
+    const Time& runTime,
+    const fileName& workDir
 )
 :
     script_(couplingDict.get<fileName>("demScript")),
@@ -126,7 +127,8 @@ Foam::demCoupling::demEngine::demEngine
     interval_(0)
 {
     // Paths of the DEM script (and inside it) are relative to the case
-    const fileName caseDir(runTime.globalPath());
+    // (or to workDir, where LIGGGHTS then runs and logs)
+    const fileName caseDir(workDir.empty() ? runTime.globalPath() : workDir);
 
     // A run that starts after 0 continues from the DEM state of that time
     fileName restart;
@@ -403,10 +405,16 @@ void Foam::demCoupling::demEngine::deleteParticles(const labelList& tags)
 }
 
 
-void Foam::demCoupling::demEngine::checkTimeStep() const
+Foam::scalar Foam::demCoupling::demEngine::rayleighTime
+(
+    scalar& dSmallest,
+    scalar& ESmallest
+) const
 {
     using namespace LAMMPS_NS;
 
+    dSmallest = 0;
+    ESmallest = 0;
     const int nTypes = lmp_->atom->ntypes;
     Fix* E = lmp_->modify->find_fix_property
     (
@@ -420,9 +428,7 @@ void Foam::demCoupling::demEngine::checkTimeStep() const
     );
     if (!E || !nu)
     {
-        Info<< "DEM: no youngsModulus/poissonsRatio per atom type: the time"
-            << " step is not checked against the Rayleigh time" << endl;
-        return;
+        return -1;
     }
 
     // Smallest Rayleigh time over the local particles, then over ranks:
@@ -452,11 +458,28 @@ void Foam::demCoupling::demEngine::checkTimeStep() const
     local.value = tR;
     MPI_Comm_rank(solverComm(), &local.rank);
     MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, solverComm());
-    tR = global.value;
     double dE[2] = {rMin, EMin};
     MPI_Bcast(dE, 2, MPI_DOUBLE, global.rank, solverComm());
-    rMin = dE[0];
-    EMin = dE[1];
+    if (global.value >= GREAT)
+    {
+        return GREAT;   // no particles yet
+    }
+    dSmallest = 2*dE[0];
+    ESmallest = dE[1];
+    return global.value;
+}
+
+
+void Foam::demCoupling::demEngine::checkTimeStep() const
+{
+    scalar dMin = 0, EMin = 0;
+    const scalar tR = rayleighTime(dMin, EMin);
+    if (tR < 0)
+    {
+        Info<< "DEM: no youngsModulus/poissonsRatio per atom type: the time"
+            << " step is not checked against the Rayleigh time" << endl;
+        return;
+    }
     if (tR >= GREAT)
     {
         return;   // no particles yet
@@ -469,14 +492,14 @@ void Foam::demCoupling::demEngine::checkTimeStep() const
     {
         Info<< "Warning: the DEM time step " << dt << " s is " << 100*dt/tR
             << " % of the Rayleigh time " << tR << " s (smallest particle";
-        if (rMin > 0)
+        if (dMin > 0)
         {
-            Info<< " d = " << 2*rMin << " m, E = " << EMin << " Pa";
+            Info<< " d = " << dMin << " m, E = " << EMin << " Pa";
         }
         Info<< "): contacts are under-resolved and may blow up." << nl
             << "    Use a timestep of at most 20 % of it (" << 0.2*tR
-            << " s) in " << script_ << ", or a softer youngsModulus."
-            << endl;
+            << " s) in " << script_ << ", or a softer youngsModulus"
+            << " (checkDemScene lists what the scene needs)." << endl;
     }
 }
 

@@ -79,14 +79,16 @@ void Foam::demCoupling::couplingDiagnostics::report
                 << " more particle volume than these cells hold. Use a"
                 << " void-fraction model that spreads wider (virtualSphere,"
                 << " diffusion) or larger cells; lowering minVoidFraction"
-                << " only hides it." << endl;
+                << " only hides it. checkDemScene lists what the scene"
+                << " needs." << endl;
         }
         if (s.cellsPerStep > 1)
         {
             Info<< "Warning: a particle crossed " << s.cellsPerStep
                 << " cells in one coupling step at t = " << runTime.timeName()
                 << " s: the fluid it sees jumps between steps. Reduce deltaT"
-                << " (fewer DEM steps per coupling step)." << endl;
+                << " (fewer DEM steps per coupling step); checkDemScene"
+                << " lists what the scene needs." << endl;
         }
     }
 

@@ -1,0 +1,184 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+/*---------------------------------------------------------------------------*\
+Application
+    checkDemScene
+
+Description
+    Tells what a coupled scene needs before it runs: the particle sizes
+    against the cells, the DEM step against the Rayleigh time, the coupling
+    step against the particle response time, the particle Courant number,
+    and, for each void-fraction model, the expected error and stability at
+    this cell size from the project's measured maps (docs/meshStudy.dat,
+    docs/stability/*.dat), with a verdict (demCoupling::sceneCheck).
+
+    Reads the mesh, constant/couplingProperties, constant/transportProperties,
+    constant/g and system/controlDict; LIGGGHTS runs the DEM script's setup
+    (no time step) in a scratch copy of the script's folder under $TMPDIR
+    or /tmp (removed afterwards). Writes nothing in the case. Exits 1 when a setting lies in a
+    measured failure region, 0 otherwise (warnings included).
+
+Usage
+    checkDemScene [-targetError 1] [-velocity 0.1] [-maps DIR]
+
+    -targetError  the settling error allowed, in % (default 1)
+    -velocity     the expected particle speed [m/s] for the Courant number
+                  (default: the median particle's terminal velocity)
+    -maps         the folder of the measured tables (default
+                  $INTERDEMFOAM_DIR/docs)
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "demEngine.H"
+#include "sceneCheck.H"
+
+using namespace Foam;
+
+namespace
+{
+    //- The scratch folder, removed however the process ends (a FatalError
+    //  included)
+    fileName scratchFolder;
+    void removeScratch()
+    {
+        if (!scratchFolder.empty())
+        {
+            rmDir(scratchFolder, true);
+        }
+    }
+}
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "What a coupled scene needs before it runs: particle sizes against"
+        " the cells, DEM and coupling steps, and the void-fraction models'"
+        " expected error and stability from the project's measured maps."
+        " Exits 1 when a setting lies in a measured failure region."
+    );
+    argList::noParallel();
+    argList::addOption
+    (
+        "targetError", "percent", "settling error allowed (default 1)"
+    );
+    argList::addOption
+    (
+        "velocity", "m/s",
+        "expected particle speed (default: the median particle's terminal"
+        " velocity)"
+    );
+    argList::addOption
+    (
+        "maps", "dir", "folder of the measured tables (default"
+        " $INTERDEMFOAM_DIR/docs)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const scalar target = args.getOrDefault<scalar>("targetError", 1);
+    const scalar velocity = args.getOrDefault<scalar>("velocity", -1);
+    if (target <= 0)
+    {
+        FatalErrorInFunction
+            << "-targetError " << target << ": give a positive error in %"
+            << exit(FatalError);
+    }
+    const demCoupling::sceneMaps maps
+    (
+        args.getOrDefault<fileName>("maps", demCoupling::sceneMaps::defaultDir())
+    );
+
+    const IOdictionary couplingDict
+    (
+        IOobject
+        (
+            "couplingProperties", runTime.constant(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+
+    // The scene as the run starts
+    if (runTime.value() > 0)
+    {
+        Info<< "Checked as the run starts from 0 (the case's start time is "
+            << runTime.timeName() << " s)" << endl;
+        runTime.setTime(instant(0, "0"), 0);
+    }
+
+    // LIGGGHTS runs the script's setup (read_restart, create_atoms, walls,
+    // materials: the particles as they start) in a scratch copy, so that
+    // the files the script opens (logs, fix print, dumps) leave the case
+    // as it is: the script's folder copied, the case's other folders empty
+    const fileName caseDir(runTime.globalPath());
+    const fileName scratch
+    (
+        fileName(getEnv("TMPDIR").empty() ? "/tmp" : getEnv("TMPDIR"))
+       /("checkDemScene." + Foam::name(pid()))
+    );
+    rmDir(scratch, true);
+    mkDir(scratch);
+    scratchFolder = scratch;
+    std::atexit(removeScratch);
+    const fileName script(couplingDict.get<fileName>("demScript"));
+    {
+        fileName path(script);
+        path.expand();
+        if (!path.isAbsolute())
+        {
+            path = caseDir/path;
+        }
+        if (!isFile(path))
+        {
+            FatalIOErrorInFunction(couplingDict)
+                << "Cannot open the DEM script " << path << " (keyword"
+                << " demScript, relative to the case)" << exit(FatalIOError);
+        }
+    }
+    const wordList parts(script.components());
+    const word scriptDir
+    (
+        !script.isAbsolute() && parts.size() > 1 ? parts[0] : word()
+    );
+    for (const fileName& d : readDir(caseDir, fileName::DIRECTORY))
+    {
+        scalar t = 0;
+        if (readScalar(d, t) || d.startsWith("processor"))
+        {
+            continue;   // time folders and decomposed copies
+        }
+        if (d == scriptDir)
+        {
+            cp(caseDir/d, scratch/d);
+        }
+        else
+        {
+            mkDir(scratch/d);
+        }
+    }
+
+    autoPtr<demCoupling::demEngine> engine
+    (
+        new demCoupling::demEngine(couplingDict, runTime, scratch)
+    );
+
+    demCoupling::sceneCheck check(mesh, couplingDict, maps);
+    const label failures = check.run(engine(), target, velocity);
+    engine.clear();
+
+    Info<< (failures ? "checkDemScene: FAIL" : "checkDemScene: ok") << nl
+        << "End" << nl << endl;
+
+    // The exit code through UPstream::exit: once LIGGGHTS has started MPI,
+    // argList's destructor ends the process with UPstream::exit(0), which
+    // would hide a failure from a script
+    UPstream::exit(failures ? 1 : 0);
+    return failures ? 1 : 0;
+}
+
+
+// ************************************************************************* //
