@@ -93,14 +93,19 @@ int main(int argc, char *argv[])
         args.getOrDefault<fileName>("maps", demCoupling::sceneMaps::defaultDir())
     );
 
-    const IOdictionary couplingDict
+    IOobject couplingIO
     (
-        IOobject
-        (
-            "couplingProperties", runTime.constant(), mesh,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        )
+        "couplingProperties", runTime.constant(), mesh,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
     );
+    if (!couplingIO.typeHeaderOk<IOdictionary>(true))
+    {
+        Info<< "No constant/couplingProperties: a case without particles"
+            << " (plain two-phase VoF), nothing to check" << nl
+            << "checkDemScene: ok" << nl << "End" << nl << endl;
+        return 0;
+    }
+    const IOdictionary couplingDict(couplingIO);
 
     // The scene as the run starts
     if (runTime.value() > 0)
