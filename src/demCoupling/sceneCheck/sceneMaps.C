@@ -50,6 +50,23 @@ Foam::List<Foam::List<std::string>> readRows(const Foam::fileName& file)
 }
 
 
+// FatalError unless row r has at least n columns
+void requireColumns
+(
+    const Foam::List<std::string>& r,
+    const Foam::label n,
+    const Foam::fileName& file
+)
+{
+    if (r.size() < n)
+    {
+        FatalErrorInFunction
+            << "A row of " << file << " has " << r.size() << " columns, "
+            << n << " or more expected" << Foam::exit(Foam::FatalError);
+    }
+}
+
+
 Foam::scalar number
 (
     const std::string& s,
@@ -90,12 +107,7 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
     const fileName study(dir/"meshStudy.dat");
     for (const List<std::string>& r : readRows(study))
     {
-        if (r.size() < 6)
-        {
-            FatalErrorInFunction
-                << "A row of " << study << " has " << r.size()
-                << " columns, 6 or more expected" << exit(FatalError);
-        }
+        requireColumns(r, 6, study);
         const word model(r[0]);
         label m = modelIndex(model);
         if (m < 0)
@@ -114,12 +126,7 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
     const fileName stability(dir/"stability"/"stabilityMap.dat");
     for (const List<std::string>& r : readRows(stability))
     {
-        if (r.size() < 3)
-        {
-            FatalErrorInFunction
-                << "A row of " << stability << " has " << r.size()
-                << " columns, 3 or more expected" << exit(FatalError);
-        }
+        requireColumns(r, 3, stability);
         const label m = modelIndex(word(r[0]));
         if (m < 0)
         {
@@ -138,12 +145,7 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
     const fileName drag(dir/"stability"/"dragStability.dat");
     for (const List<std::string>& r : readRows(drag))
     {
-        if (r.size() < 6)
-        {
-            FatalErrorInFunction
-                << "A row of " << drag << " has " << r.size()
-                << " columns, 6 expected" << exit(FatalError);
-        }
+        requireColumns(r, 6, drag);
         dragRun d;
         d.scene = r[0];
         d.scheme = r[1];
