@@ -355,6 +355,20 @@ def height_at(case, times, span=2.0):
     return out
 
 
+def height_change(case, window):
+    """The dam height (height_at) at the last dump's time t_end and at
+    t_end - window: (h_before, h_end, t_end); None when the run is shorter
+    than the window (plus 2 s)."""
+    dumps = dump_files(case, 'particles')
+    if not dumps:
+        sys.exit('damBreachAnalysis: no dumps in %s/post' % case)
+    t_end = dumps[-1][0]
+    if t_end < window + 2.0:
+        return None
+    h_before, h_end = height_at(case, [t_end - window, t_end])
+    return h_before, h_end, t_end
+
+
 def ended(case, window, tolerance, max_time):
     """True when the run should stop: the dam height changed by less than
     tolerance over the last window seconds (the breach has ended), or the
@@ -372,12 +386,12 @@ def ended(case, window, tolerance, max_time):
         print('%s: every grain has left the flume (%s): the breach has ended'
               % (case, os.path.relpath(emptied[0], case)))
         return True
-    t_end = dumps[-1][0]
-    if t_end < window + 2.0:
+    change_of = height_change(case, window)
+    if change_of is None:
         print('%s: %.1f s run, shorter than the %g s window: not ended'
-              % (case, t_end, window))
+              % (case, dumps[-1][0], window))
         return False
-    h_before, h_end = height_at(case, [t_end - window, t_end])
+    h_before, h_end, t_end = change_of
     change = abs(h_end - h_before)
     done = change < tolerance
     print('%s: dam height %.4f m at %.1f s, %.4f m at %.1f s: change %.1f mm '

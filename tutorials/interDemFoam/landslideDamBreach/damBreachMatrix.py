@@ -134,12 +134,6 @@ def shape_factor(h):
     return np.sum(h)*dba.BIN/(0.5*height*base)
 
 
-def trailing_mean(t, y, t0, span=SMOOTH):
-    """Mean of y over [t0 - span, t0] (as damBreachAnalysis.py ended)."""
-    sel = (t >= t0 - span - 1e-9) & (t <= t0 + 1e-9)
-    return np.mean(y[sel]) if np.any(sel) else np.nan
-
-
 class Run:
     """One scenario's run: series from damBreach.dat, profiles and grains
     from the DEM dumps."""
@@ -225,10 +219,11 @@ class Run:
         return np.interp(t, series_t, series)
 
     def _phases(self):
-        self.ended_change = abs(trailing_mean(self.t, self.H, self.t[-1]) -
-                                trailing_mean(self.t, self.H,
-                                              self.t[-1] - 20))
-        self.ended = self.t[-1] >= 22 and self.ended_change < 0.005
+        # ended: as Allrun's run-length check (damBreachAnalysis.py ended)
+        change_of = dba.height_change(self.case, 20)
+        self.ended_change = abs(change_of[1] - change_of[0]) \
+            if change_of else np.nan
+        self.ended = change_of is not None and self.ended_change < 0.005
         self.failed = self.Hres < FAILED*self.H0
         self.t_toe = self.t_back = self.t_head = self.t_end = None
         toe = (self.centres >= TOE - 0.25) & (self.centres <= TOE)
@@ -497,13 +492,7 @@ def figures(runs, out, scale):
                     dpi=110)
         plt.close(fig)
 
-    fig, axes = plt.subplots(2, 4, figsize=(18, 7), sharex=True, sharey=True)
-    for k, n in enumerate(SCENARIOS):
-        ax = axes[k // 4, k % 4]
-        if n not in runs:
-            ax.set_title('%s: no run' % n)
-            continue
-        r = runs[n]
+    def profiles(ax, r):
         pick = np.unique(np.linspace(0, len(r.tp) - 1, 8).round().astype(int))
         cmap = plt.get_cmap('viridis')
         for j, i in enumerate(pick[1:]):
@@ -511,37 +500,41 @@ def figures(runs, out, scale):
                     color=cmap(j/max(1, len(pick) - 2)), lw=1,
                     label='%g s' % r.tp[i])
         ax.plot(r.centres, r.profiles[0]*1000, 'k--', lw=1, label='t = 0')
-        ax.set_title('(%s) %s, %g l/s' % ('ABCDEFGH'[k], n, 1000*r.inflow))
         ax.set_xlim(2.5, 7)
         ax.legend(fontsize=6, ncol=2)
-        if k % 4 == 0:
-            ax.set_ylabel('surface of resting grains [mm]')
-        if k >= 4:
-            ax.set_xlabel('x along the bed [m]')
-    fig.suptitle('Longitudinal profiles (seed Fig. 9), %s scale' % scale)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, 'fig9.%s.png' % scale), dpi=100)
-    plt.close(fig)
+        return ', %g l/s' % (1000*r.inflow)
 
-    fig, axes = plt.subplots(2, 4, figsize=(18, 7), sharex=True, sharey=True)
-    for k, n in enumerate(SCENARIOS):
-        ax = axes[k // 4, k % 4]
-        if n not in runs:
-            continue
-        r = runs[n]
+    def rates(ax, r):
         ax.plot(r.t, r.rate*1000, 'b-', lw=0.8)
         ax.axhline(0, color='grey', lw=0.5)
         if r.t_over >= 0:
             ax.axvline(r.t_over, color='r', lw=0.8, ls=':')
-        ax.set_title('(%s) %s' % ('ABCDEFGH'[k], n))
-        if k % 4 == 0:
-            ax.set_ylabel('(H(t+dt) - H(t))/dt [mm/s]')
-        if k >= 4:
-            ax.set_xlabel('t [s] (red: overtopping)')
-    fig.suptitle('Height-change rate, eq. 21 (seed Fig. 11), %s scale' % scale)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, 'fig11.%s.png' % scale), dpi=100)
-    plt.close(fig)
+        return ''
+
+    for fig_no, draw, ylabel, xlabel, title in (
+            (9, profiles, 'surface of resting grains [mm]',
+             'x along the bed [m]', 'Longitudinal profiles (seed Fig. 9)'),
+            (11, rates, '(H(t+dt) - H(t))/dt [mm/s]',
+             't [s] (red: overtopping)',
+             'Height-change rate, eq. 21 (seed Fig. 11)')):
+        fig, axes = plt.subplots(2, 4, figsize=(18, 7), sharex=True,
+                                 sharey=True)
+        for k, n in enumerate(SCENARIOS):
+            ax = axes[k // 4, k % 4]
+            if n not in runs:
+                ax.set_title('%s: no run' % n)
+                continue
+            more = draw(ax, runs[n])
+            ax.set_title('(%s) %s%s' % ('ABCDEFGH'[k], n, more))
+            if k % 4 == 0:
+                ax.set_ylabel(ylabel)
+            if k >= 4:
+                ax.set_xlabel(xlabel)
+        fig.suptitle('%s, %s scale' % (title, scale))
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, 'fig%d.%s.png' % (fig_no, scale)),
+                    dpi=100)
+        plt.close(fig)
 
 
 def main(out, scale, cases):
