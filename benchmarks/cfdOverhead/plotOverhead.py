@@ -13,7 +13,8 @@ import os
 import re
 import sys
 
-RUNS = ['interFoam', 'noParticles', 'frozen', 'frozenSemiImplicit']
+RUNS = ['interFoam', 'noParticles', 'frozen', 'frozenSemiImplicit',
+        'frozenGAMG']
 STAGES = ['phaseFraction', 'continuityCorrection', 'momentum', 'pressure',
           'other']
 
