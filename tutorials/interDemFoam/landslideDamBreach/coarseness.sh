@@ -24,8 +24,13 @@ cd "${0%/*}" || exit                                # Run from this directory
 #   lift     C2, with Saffman and Magnus lift
 #   Fcoarse  F2 with a coarser grading (15-40 mm, DEM/in.material.Fcoarse)
 #   cell25   C2, 25 mm cells instead of 50 mm
+#   semiCo1  C2, semi-implicit MULES (MULESCorr yes) at maxCo 1 (the
+#            tutorial: explicit at 0.5; maxDeltaT scales with it)
+#   semiCo2  C2, semi-implicit MULES at maxCo 2
+#   ranks2   C2 on 2 MPI ranks: the same run with sums in another order,
+#            the round-off spread the others are judged against
 #------------------------------------------------------------------------------
-all="dry smooth w02 divided centre lift Fcoarse cell25"
+all="dry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2"
 variants=${*:-$all}
 
 options()
@@ -39,6 +44,9 @@ options()
         lift)    echo "-scenario C2 -forces \"DiFeliceDrag pressureGradient SaffmanLift MagnusLift\"" ;;
         Fcoarse) echo "-scenario F2 -grading Fcoarse" ;;
         cell25)  echo "-scenario C2 -cellSize 0.025" ;;
+        semiCo1) echo "-scenario C2 -semiImplicitAlpha -maxCo 1" ;;
+        semiCo2) echo "-scenario C2 -semiImplicitAlpha -maxCo 2" ;;
+        ranks2)  echo "-scenario C2 -parallel 2" ;;
         *) return 1 ;;
     esac
 }

@@ -623,6 +623,9 @@ VARIANTS = {
     'lift': 'Saffman + Magnus lift',
     'Fcoarse': 'coarser grading (15-40 mm)',
     'cell25': '25 mm cells',
+    'semiCo1': 'semi-implicit MULES (MULESCorr yes), maxCo 1',
+    'semiCo2': 'semi-implicit MULES (MULESCorr yes), maxCo 2',
+    'ranks2': 'the tutorial on 2 MPI ranks (round-off spread; CPU of one rank)',
 }
 
 
