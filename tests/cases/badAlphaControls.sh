@@ -8,6 +8,7 @@
 #   - alphaApplyPrevCorr yes (the last step's correction flux is no guess
 #     once the particles have changed eps)
 #   - nAlphaSubCycles 0
+#   - icAlpha 0.5 (interFoam's isotropic compression)
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 
@@ -33,5 +34,6 @@ expectAlphaError()
 }
 
 expectAlphaError prevCorr alphaApplyPrevCorr yes "alphaApplyPrevCorr yes is not supported"
-expectAlphaError noSubCycles nAlphaSubCycles 0 "nAlphaSubCycles (0) and nAlphaCorr"
+expectAlphaError noSubCycles nAlphaSubCycles 0 "nAlphaSubCycles (0) must be at least 1"
+expectAlphaError isoCompression icAlpha 0.5 "icAlpha 0.5 and scAlpha 0"
 pass "unsupported phase-fraction controls rejected"

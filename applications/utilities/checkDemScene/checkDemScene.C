@@ -15,8 +15,9 @@ Description
 
     Reads the mesh, constant/couplingProperties, constant/transportProperties,
     constant/g and system/controlDict; LIGGGHTS runs the DEM script's setup
-    (no time step) in a scratch copy of the script's folder under $TMPDIR
-    or /tmp (removed afterwards). Writes nothing in the case. Exits 1 when a setting lies in a
+    (no time step) in a scratch copy of the case's folders under $TMPDIR
+    or /tmp (removed afterwards; time folders and anything above 64 MB
+    left out). Writes nothing in the case. Exits 1 when a setting lies in a
     measured failure region, 0 otherwise (warnings included).
 
 Usage
@@ -38,6 +39,29 @@ using namespace Foam;
 
 namespace
 {
+    //- Bytes in a folder (recursive), counted up to limit
+    off_t folderSize(const fileName& dir, const off_t limit)
+    {
+        off_t total = 0;
+        for (const fileName& f : readDir(dir, fileName::FILE))
+        {
+            total += Foam::fileSize(dir/f);
+            if (total >= limit)
+            {
+                return total;
+            }
+        }
+        for (const fileName& d : readDir(dir, fileName::DIRECTORY))
+        {
+            total += folderSize(dir/d, limit - total);
+            if (total >= limit)
+            {
+                return total;
+            }
+        }
+        return total;
+    }
+
     //- The scratch folder, removed however the process ends (a FatalError
     //  included)
     fileName scratchFolder;
@@ -118,7 +142,7 @@ int main(int argc, char *argv[])
     // LIGGGHTS runs the script's setup (read_restart, create_atoms, walls,
     // materials: the particles as they start) in a scratch copy, so that
     // the files the script opens (logs, fix print, dumps) leave the case
-    // as it is: the script's folder copied, the case's other folders empty
+    // as it is
     const fileName caseDir(runTime.globalPath());
     const fileName scratch
     (
@@ -144,19 +168,26 @@ int main(int argc, char *argv[])
                 << " demScript, relative to the case)" << exit(FatalIOError);
         }
     }
-    const wordList parts(script.components());
-    const word scriptDir
-    (
-        !script.isAbsolute() && parts.size() > 1 ? parts[0] : word()
-    );
+    // Every folder of the case but the time folders and decomposed copies,
+    // and the case's own files; a folder or file above 64 MB (results:
+    // dumps, VTK) is left out, a folder then made empty (the script may
+    // write into it)
+    const off_t copyLimit = 64*1024*1024;
+    for (const fileName& f : readDir(caseDir, fileName::FILE))
+    {
+        if (Foam::fileSize(caseDir/f) < copyLimit)
+        {
+            cp(caseDir/f, scratch/f);
+        }
+    }
     for (const fileName& d : readDir(caseDir, fileName::DIRECTORY))
     {
         scalar t = 0;
         if (readScalar(d, t) || d.startsWith("processor"))
         {
-            continue;   // time folders and decomposed copies
+            continue;
         }
-        if (d == scriptDir)
+        if (folderSize(caseDir/d, copyLimit) < copyLimit)
         {
             cp(caseDir/d, scratch/d);
         }

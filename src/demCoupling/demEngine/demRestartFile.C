@@ -245,6 +245,8 @@ void Foam::demCoupling::demRestartFile::commit
         }
         else
         {
+            // an emptied marker left from an earlier run of this time
+            Foam::rm(emptiedFile());
             std::ostringstream text;
             text<< "// interDemFoam: check values of liggghts.restart in"
                 << " this folder; a folder without this file is incomplete\n"
@@ -325,6 +327,9 @@ void Foam::demCoupling::demRestartFile::markEmptied(const Time& runTime) const
         return;
     }
     mkDir(file_.path());
+    // A DEM state left from an earlier run of this time is not this run's
+    Foam::rm(file_);
+    Foam::rm(checkFile());
     OFstream os(emptiedFile());
     os  << "// interDemFoam: no DEM restart file at t = " << timeName_
         << " s: every DEM particle had left the domain" << nl

@@ -254,10 +254,19 @@ Foam::label Foam::demCoupling::sceneCheck::run
     // The coupling step against the particle response time
     const bool adjustable =
         runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false);
+    // the longest coupling step the run may take
+    const scalar maxDeltaT =
+        runTime.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT);
     const scalar dt =
-        adjustable
-      ? runTime.controlDict().get<scalar>("maxDeltaT")
-      : runTime.deltaTValue();
+        adjustable && maxDeltaT < GREAT ? maxDeltaT : runTime.deltaTValue();
+    if (adjustable && maxDeltaT >= GREAT)
+    {
+        warnings_.append
+        (
+            "adjustTimeStep without maxDeltaT: the coupling step is"
+            " unbounded; checked at the first deltaT, " + fig(dt) + " s"
+        );
+    }
     if (nIn)
     {
         List<scalar> tau(nIn);
@@ -270,7 +279,7 @@ Foam::label Foam::demCoupling::sceneCheck::run
         scalar stable = 0;
         const scalar blowUp = maps_.dragBlowUp(scheme, scene, stable);
         Info<< "    coupling step     " << dt << " s"
-            << (adjustable ? " (maxDeltaT)" : "") << " = "
+            << (adjustable && maxDeltaT < GREAT ? " (maxDeltaT)" : "") << " = "
             << fig(dt/tauMin) << " tau_p of the most responsive particle ("
             << fig(tauMin) << " s); " << scheme << " DEM drag blew up at "
             << (blowUp < GREAT ? fig(blowUp) + " tau_p (settling)"
@@ -294,8 +303,9 @@ Foam::label Foam::demCoupling::sceneCheck::run
         std::string why(" (given)");
         if (v <= 0)
         {
-            // terminal velocity of the median particle, eps = 1, with the
-            // case's force models: F(v) = (rho_p - rho_f) V_p g
+            // terminal velocity of the median particle, eps = 1, in still
+            // hydrostatic fluid, with the case's force models (buoyancy
+            // only if pressureGradient is one): F(v) = rho_p V_p g
             PtrList<forceModel> forces(forceModel::NewList(couplingDict_));
             particleFluidState s;
             s.d = quantile(d, 0.5);
@@ -303,7 +313,8 @@ Foam::label Foam::demCoupling::sceneCheck::run
             s.rhoF = rhoF;
             s.muF = muF;
             s.eps = 1;
-            const scalar weight = (s.rhoP - rhoF)*pi/6*pow3(s.d)*gMag;
+            s.gradP = vector(0, 0, -rhoF*gMag);
+            const scalar weight = s.rhoP*pi/6*pow3(s.d)*gMag;
             auto resistance = [&](const scalar speed)
             {
                 s.Up = vector(0, 0, -speed);
@@ -319,7 +330,26 @@ Foam::label Foam::demCoupling::sceneCheck::run
             {
                 hi *= 2;
             }
-            if (weight > 0 && hi < 1e4)
+            if (resistance(0) >= weight)
+            {
+                why = " (the median particle floats: no settling velocity)";
+                warnings_.append
+                (
+                    "the median particle does not settle in the fluid: the"
+                    " particle Courant number is not checked (give"
+                    " -velocity)"
+                );
+            }
+            else if (hi >= 1e4)
+            {
+                warnings_.append
+                (
+                    "no terminal velocity below 1e4 m/s with the case's"
+                    " force models (no drag?): the particle Courant number"
+                    " is not checked (give -velocity)"
+                );
+            }
+            else
             {
                 scalar lo = 0;
                 for (label it = 0; it < 200; ++it)

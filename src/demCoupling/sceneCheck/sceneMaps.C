@@ -266,10 +266,38 @@ int Foam::demCoupling::sceneMaps::bounded
         atDxOverD = -1;
         return -1;
     }
-    bool extrapolated = false;
-    const point& p = below(m, dxOverD, extrapolated);
-    atDxOverD = p.dxOverD;
-    return p.bounded;
+    // The stability runs only (the mesh study has sizes they lack): the
+    // largest measured size at or below dxOverD; below the smallest one
+    // a failure there holds (smaller is harder), a pass says nothing
+    const point* at = nullptr;
+    const point* smallest = nullptr;
+    for (const point& p : points_[m])
+    {
+        if (p.bounded < 0)
+        {
+            continue;
+        }
+        if (!smallest)
+        {
+            smallest = &p;
+        }
+        if (p.dxOverD <= dxOverD + 1e-9)
+        {
+            at = &p;
+        }
+    }
+    if (!smallest)
+    {
+        atDxOverD = -1;
+        return -1;
+    }
+    if (!at)
+    {
+        atDxOverD = smallest->dxOverD;
+        return smallest->bounded == 0 ? 0 : -1;
+    }
+    atDxOverD = at->dxOverD;
+    return at->bounded;
 }
 
 
