@@ -195,12 +195,10 @@ const Foam::demCoupling::sceneMaps::point&
 Foam::demCoupling::sceneMaps::below
 (
     const label m,
-    const scalar dxOverD,
-    bool& extrapolated
+    const scalar dxOverD
 ) const
 {
     const DynamicList<point>& pts = points_[m];
-    extrapolated = dxOverD < pts.first().dxOverD - 1e-9;
     label k = 0;
     forAll(pts, i)
     {
@@ -313,9 +311,8 @@ Foam::scalar Foam::demCoupling::sceneMaps::relativeCost
     {
         return -1;
     }
-    bool e1 = false, e2 = false;
-    const point& p = below(m, dxOverD, e1);
-    const point& q = below(vs, dxOverD, e2);
+    const point& p = below(m, dxOverD);
+    const point& q = below(vs, dxOverD);
     if (p.wallSeconds >= GREAT || q.wallSeconds <= 0)
     {
         return -1;
