@@ -3,7 +3,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "DiFeliceDrag.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
 
 namespace Foam
 {
@@ -23,7 +22,7 @@ Foam::demCoupling::forceModels::DiFeliceDrag::DiFeliceDrag
     const dictionary& coeffs
 )
 :
-    forceModel(coeffs)
+    dragModel(coeffs)
 {}
 
 
@@ -49,30 +48,26 @@ Foam::scalar Foam::demCoupling::forceModels::DiFeliceDrag::voidageExponent
 }
 
 
-Foam::demCoupling::particleForce
-Foam::demCoupling::forceModels::DiFeliceDrag::force
+Foam::scalar Foam::demCoupling::forceModels::DiFeliceDrag::CdRe
 (
-    const particleFluidState& s
+    const scalar Re,
+    const scalar
 ) const
 {
-    particleForce f;
-
-    const scalar magUr = mag(s.Uf - s.Up);
-    const scalar Re = s.eps*s.d*s.rhoF*magUr/s.muF;
-
-    if (Re < ROOTVSMALL)
-    {
-        // Re -> 0: Cd -> 23.04/Re, so K = 1/2 Cd rho (pi d^2/4) eps^(2-chi)
-        // |u-v| tends to the finite 2.88 pi mu d eps^(1-chi), with chi at
-        // Re -> 0 (the exponential term vanishes there)
-        const scalar chi0 = voidageExponent(ROOTVSMALL, s.eps);
-        f.K = 2.88*constant::mathematical::pi*s.muF*s.d
-            *pow(s.eps, 1 - chi0);
-        return f;
-    }
-
-    f.K = 0.5*Cd(Re)*s.rhoF*constant::mathematical::pi/4*sqr(s.d)
-        *pow(s.eps, 2 - voidageExponent(Re, s.eps))*magUr;
-
-    return f;
+    return sqr(0.63*sqrt(Re) + 4.8);
 }
+
+
+Foam::scalar Foam::demCoupling::forceModels::DiFeliceDrag::voidageFunction
+(
+    const scalar Re,
+    const scalar eps
+) const
+{
+    // chi takes log10(Re): at Re -> 0 its Gaussian term vanishes, so chi at
+    // ROOTVSMALL is its limit without a log of zero
+    return pow(eps, 1 - voidageExponent(max(Re, ROOTVSMALL), eps));
+}
+
+
+// ************************************************************************* //

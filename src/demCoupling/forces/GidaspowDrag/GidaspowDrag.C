@@ -4,7 +4,6 @@
 #include "GidaspowDrag.H"
 #include "SchillerNaumannDrag.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
 
 namespace Foam
 {
@@ -24,41 +23,33 @@ Foam::demCoupling::forceModels::GidaspowDrag::GidaspowDrag
     const dictionary& coeffs
 )
 :
-    forceModel(coeffs)
+    dragModel(coeffs)
 {}
 
 
-Foam::demCoupling::particleForce
-Foam::demCoupling::forceModels::GidaspowDrag::force
+Foam::scalar Foam::demCoupling::forceModels::GidaspowDrag::CdRe
 (
-    const particleFluidState& s
+    const scalar Re,
+    const scalar eps
 ) const
 {
-    using constant::mathematical::pi;
+    // Ergun: beta V_p/(1 - eps) = V_p (150 (1 - eps) mu/(eps d^2)
+    // + 1.75 rho |u - v|/d), i.e. (pi mu d/8)(200 (1 - eps) + 7/3 Re)/eps
+    return
+        eps < ergunLimit
+      ? 200*(1 - eps) + 7.0/3.0*Re
+      : SchillerNaumannDrag::sphereCdRe(Re);
+}
 
-    const scalar Vp = pi/6*pow3(s.d);
-    const scalar magUr = mag(s.Uf - s.Up);
 
-    particleForce f;
-
-    if (s.eps < ergunLimit)
-    {
-        // beta V_p/(1 - eps) with the (1 - eps) cancelled
-        f.K = Vp
-           *(
-                150*(1 - s.eps)*s.muF/(s.eps*sqr(s.d))
-              + 1.75*s.rhoF*magUr/s.d
-            );
-    }
-    else
-    {
-        // 3/4 Cd rho |u-v|/d V_p eps^-1.65 with Cd of Re = eps d rho |u-v|/mu:
-        // Cd Re pi mu d/8 eps^-2.65, finite as Re -> 0
-        const scalar Re = s.eps*s.d*s.rhoF*magUr/s.muF;
-        f.K = SchillerNaumannDrag::CdRe(Re)*pi*s.muF*s.d/8*pow(s.eps, -2.65);
-    }
-
-    return f;
+Foam::scalar Foam::demCoupling::forceModels::GidaspowDrag::voidageFunction
+(
+    const scalar,
+    const scalar eps
+) const
+{
+    // Wen & Yu: 3/4 Cd rho eps |u-v|/d V_p eps^-2.65 = Cd Re pi mu d/8 eps^-2.65
+    return eps < ergunLimit ? 1/eps : pow(eps, -2.65);
 }
 
 

@@ -3,7 +3,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "SchillerNaumannDrag.H"
 #include "addToRunTimeSelectionTable.H"
-#include "mathematicalConstants.H"
 
 namespace Foam
 {
@@ -23,11 +22,11 @@ Foam::demCoupling::forceModels::SchillerNaumannDrag::SchillerNaumannDrag
     const dictionary& coeffs
 )
 :
-    forceModel(coeffs)
+    dragModel(coeffs)
 {}
 
 
-Foam::scalar Foam::demCoupling::forceModels::SchillerNaumannDrag::CdRe
+Foam::scalar Foam::demCoupling::forceModels::SchillerNaumannDrag::sphereCdRe
 (
     const scalar Re
 )
@@ -36,21 +35,34 @@ Foam::scalar Foam::demCoupling::forceModels::SchillerNaumannDrag::CdRe
 }
 
 
-Foam::demCoupling::particleForce
-Foam::demCoupling::forceModels::SchillerNaumannDrag::force
+Foam::scalar Foam::demCoupling::forceModels::SchillerNaumannDrag::Reynolds
 (
-    const particleFluidState& s
+    const particleFluidState& s,
+    const scalar magUr
 ) const
 {
-    using constant::mathematical::pi;
+    return s.d*s.rhoF*magUr/s.muF;
+}
 
-    const scalar magUr = mag(s.Uf - s.Up);
-    const scalar Re = s.d*s.rhoF*magUr/s.muF;
 
-    // K = 1/2 Cd rho (pi d^2/4) |u - v| = Cd Re pi mu d/8: finite at Re = 0
-    particleForce f;
-    f.K = CdRe(Re)*pi*s.muF*s.d/8;
-    return f;
+Foam::scalar Foam::demCoupling::forceModels::SchillerNaumannDrag::CdRe
+(
+    const scalar Re,
+    const scalar
+) const
+{
+    return sphereCdRe(Re);
+}
+
+
+Foam::scalar
+Foam::demCoupling::forceModels::SchillerNaumannDrag::voidageFunction
+(
+    const scalar,
+    const scalar
+) const
+{
+    return 1;
 }
 
 
