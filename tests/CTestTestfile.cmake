@@ -11,6 +11,14 @@ add_test(unit.demCoupling "demCouplingTests" "-case" "run/meshCase")
 set_tests_properties(unit.demCoupling PROPERTIES
     LABELS "unit" FIXTURES_REQUIRED unitMesh TIMEOUT 120)
 
+# The unit tests' negative control: one test made to fail
+# (DEMCOUPLING_TESTS_FAIL) must make the binary exit non-zero, or a failing
+# unit test would pass in ctest (it did: OpenFOAM's argList ends with exit 0)
+add_test(unit.failureReported "env" "DEMCOUPLING_TESTS_FAIL=1" "demCouplingTests"
+    "--gtest_filter=harness.*" "-case" "run/meshCase")
+set_tests_properties(unit.failureReported PROPERTIES
+    LABELS "unit" FIXTURES_REQUIRED unitMesh WILL_FAIL TRUE TIMEOUT 60)
+
 add_test(case.closedBoxSerial "bash" "cases/closedBoxConservation.sh" "serial")
 set_tests_properties(case.closedBoxSerial PROPERTIES LABELS "case" TIMEOUT 600)
 

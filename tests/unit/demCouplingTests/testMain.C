@@ -10,6 +10,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
+#include <cstdlib>
 #include "argList.H"
 #include "Time.H"
 #include "fvMesh.H"
@@ -23,6 +24,16 @@ namespace
 const Foam::fvMesh& testing_demCoupling::mesh()
 {
     return *meshPtr;
+}
+
+
+// The harness's own negative control (ctest unit.failureReported): with
+// DEMCOUPLING_TESTS_FAIL set this test fails, and the binary must exit
+// non-zero
+TEST(harness, FailsWhenAsked)
+{
+    EXPECT_EQ(std::getenv("DEMCOUPLING_TESTS_FAIL"), nullptr)
+        << "DEMCOUPLING_TESTS_FAIL is set: this failure is on purpose";
 }
 
 
@@ -53,5 +64,14 @@ int main(int argc, char *argv[])
     Foam::FatalError.throwExceptions();
     Foam::FatalIOError.throwExceptions();
 
-    return RUN_ALL_TESTS();
+    const int result = RUN_ALL_TESTS();
+
+    // The mesh before the Time it refers to
+    meshPtr.clear();
+
+    // Not "return result": argList's destructor ends every OpenFOAM
+    // application with UPstream::exit(0), which turned failed tests into
+    // exit status 0 (ctest saw a pass). Leave with GoogleTest's own status,
+    // before args goes out of scope.
+    std::exit(result);
 }
