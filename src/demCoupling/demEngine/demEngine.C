@@ -470,40 +470,6 @@ Foam::scalar Foam::demCoupling::demEngine::rayleighTime
 }
 
 
-void Foam::demCoupling::demEngine::checkTimeStep() const
-{
-    scalar dMin = 0, EMin = 0;
-    const scalar tR = rayleighTime(dMin, EMin);
-    if (tR < 0)
-    {
-        Info<< "DEM: no youngsModulus/poissonsRatio per atom type: the time"
-            << " step is not checked against the Rayleigh time" << endl;
-        return;
-    }
-    if (tR >= GREAT)
-    {
-        return;   // no particles yet
-    }
-
-    const scalar dt = timeStep();
-    Info<< "DEM: time step " << dt << " s = " << 100*dt/tR << " % of the"
-        << " Rayleigh time " << tR << " s" << endl;
-    if (dt > 0.2*tR)
-    {
-        Info<< "Warning: the DEM time step " << dt << " s is " << 100*dt/tR
-            << " % of the Rayleigh time " << tR << " s (smallest particle";
-        if (dMin > 0)
-        {
-            Info<< " d = " << dMin << " m, E = " << EMin << " Pa";
-        }
-        Info<< "): contacts are under-resolved and may blow up." << nl
-            << "    Use a timestep of at most 20 % of it (" << 0.2*tR
-            << " s) in " << script_ << ", or a softer youngsModulus"
-            << " (checkDemScene lists what the scene needs)." << endl;
-    }
-}
-
-
 Foam::label Foam::demCoupling::demEngine::nParticles() const
 {
     int n = lmp_->atom->nlocal;
