@@ -146,6 +146,12 @@ class Run:
         self.t, self.H = d[:, 0], d[:, 1]
         self.E, self.Fn, self.Ff = d[:, 3], d[:, 9], d[:, 11]
         self.rate = d[:, 2]
+        # the lake's closest approach to the crest (freeboard, m; negative
+        # once it overtops)
+        fb = d[:, 16]
+        k = int(np.nanargmin(fb)) if np.any(np.isfinite(fb)) else -1
+        self.fb_min = fb[k] if k >= 0 else np.nan
+        self.t_fb_min = self.t[k] if k >= 0 else np.nan
         self.Hs = smooth_series(self.t, self.H)
         self.s = summary(case)
         self.H0 = self.s['initial dam height H0 [m]']
@@ -296,7 +302,9 @@ def findings(runs):
         ev = ['C1 overtopping %s; the failure reaches x = %s m (crest %.3f-'
               '%.3f m, middle %.3f m); height change over the last 20 s '
               '%.1f mm (ended: %s)'
-              % ('none' if r.t_over < 0 else 'at %.1f s' % r.t_over,
+              % ('none (closest: freeboard %.1f mm at %.1f s)'
+                 % (1000*r.fb_min, r.t_fb_min) if r.t_over < 0
+                 else 'at %.1f s' % r.t_over,
                  fmt(r.x_failure, '%.3f'), CREST[0], CREST[1],
                  0.5*(CREST[0] + CREST[1]), 1000*r.ended_change,
                  'yes' if r.ended else 'no')]
@@ -308,7 +316,9 @@ def findings(runs):
     others = [R[n] for n in SCENARIOS if n != 'C1' and n in R]
     ok = len(others) == 7 and all(r.t_over >= 0 for r in others)
     ev = ['%s %s' % (r.name, 'at %.1f s' % r.t_over if r.t_over >= 0
-                     else 'no overtopping') for r in others]
+                     else 'no overtopping (closest: freeboard %.1f mm at '
+                     '%.1f s)' % (1000*r.fb_min, r.t_fb_min))
+          for r in others]
     out.append(('P3', 'every other scenario overtops (F1 included)', ev, ok))
 
     ev, ok = [], bool(over)
