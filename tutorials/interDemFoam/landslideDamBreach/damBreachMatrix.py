@@ -635,6 +635,7 @@ VARIANTS = {
     'cell25': '25 mm cells',
     'semiCo1': 'semi-implicit MULES (MULESCorr yes), maxCo 1',
     'semiCo2': 'semi-implicit MULES (MULESCorr yes), maxCo 2',
+    'semiCo2final': 'semi-implicit MULES, maxCo 2, rerun with the drag base',
     'ranks2': 'the tutorial on 2 MPI ranks (round-off spread; CPU of one rank)',
     'co045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
 }

@@ -274,10 +274,14 @@ def fluidize(a):
         steps = [p/W for _, _, p in data]
         jumps = [abs(b - a) for a, b in zip(steps, steps[1:])]
         meanJump = sum(jumps)/max(len(jumps), 1)
+        # the solver that ran the case (its log's name)
+        solver = 'pimpleDemFoam' \
+            if os.path.isfile(os.path.join(run, 'log.pimpleDemFoam')) \
+            else 'interDemFoam'
         ax.plot([u for _, u, _ in data], steps, '-', color='0.55', lw=0.5,
                 label='every CFD step (mean step-to-step change %.2g W)' % meanJump)
         ax.plot([u for u, _ in binned], [p/W for _, p in binned], 'o-',
-                ms=3, label='interDemFoam, bin means')
+                ms=3, label='%s, bin means' % solver)
         Us = [Umf*i/50 for i in range(51)]
         ax.plot(Us, [(ca*u + cb*u*u)/W for u in Us], 'k--', lw=1,
                 label='fixed-bed fit')
