@@ -541,13 +541,13 @@ void Foam::demCoupling::particleCloud::evolve()
     const scalar xf = exchange_->seconds();
     sampleFluid();                          // 5. fluid at the particles
     computeForces();                        // 6. forces
-    assembleSources();                      // 8. fluid sources
+    assembleSources();                      // 7. fluid sources
     diagnostics_.addForces
     (
         (diagnostics_.now() - tf) - (exchange_->seconds() - xf)
     );
 
-    sendForces();                           // 7. forces out
+    sendForces();                           // 8. forces out
 
     diagnostics_.addCoupling(diagnostics_.now() - t1);
     diagnostics_.addParticleSteps(exchange_->nTotal());
