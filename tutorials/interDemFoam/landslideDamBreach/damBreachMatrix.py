@@ -152,6 +152,8 @@ class Run:
         k = int(np.nanargmin(fb)) if np.any(np.isfinite(fb)) else -1
         self.fb_min = fb[k] if k >= 0 else np.nan
         self.t_fb_min = self.t[k] if k >= 0 else np.nan
+        self.closest_text = 'closest: freeboard %.1f mm at %.1f s' \
+            % (1000*self.fb_min, self.t_fb_min)
         self.Hs = smooth_series(self.t, self.H)
         self.s = summary(case)
         self.H0 = self.s['initial dam height H0 [m]']
@@ -302,8 +304,7 @@ def findings(runs):
         ev = ['C1 overtopping %s; the failure reaches x = %s m (crest %.3f-'
               '%.3f m, middle %.3f m); height change over the last 20 s '
               '%.1f mm (ended: %s)'
-              % ('none (closest: freeboard %.1f mm at %.1f s)'
-                 % (1000*r.fb_min, r.t_fb_min) if r.t_over < 0
+              % ('none (%s)' % r.closest_text if r.t_over < 0
                  else 'at %.1f s' % r.t_over,
                  fmt(r.x_failure, '%.3f'), CREST[0], CREST[1],
                  0.5*(CREST[0] + CREST[1]), 1000*r.ended_change,
@@ -316,8 +317,7 @@ def findings(runs):
     others = [R[n] for n in SCENARIOS if n != 'C1' and n in R]
     ok = len(others) == 7 and all(r.t_over >= 0 for r in others)
     ev = ['%s %s' % (r.name, 'at %.1f s' % r.t_over if r.t_over >= 0
-                     else 'no overtopping (closest: freeboard %.1f mm at '
-                     '%.1f s)' % (1000*r.fb_min, r.t_fb_min))
+                     else 'no overtopping (%s)' % r.closest_text)
           for r in others]
     out.append(('P3', 'every other scenario overtops (F1 included)', ev, ok))
 
