@@ -89,9 +89,11 @@ do
     [ -f $c/damBreach.summary ] && cases="$cases $c" \
         || echo "coarseness.sh: no $c/damBreach.summary (./Allrun -scenario all): the chart goes without it"
 done
-for v in $all
+# every variant case on disk (any tag, also ones run by hand with
+# ./Allrun -tag); the chart keeps earlier rows whose case is not here,
+# marked "[earlier run: no case on disk]" (open symbols)
+for c in C2.small.* F2.small.*
 do
-    c=$(ls -d ./*.small.$v 2>/dev/null | head -1)
-    [ -n "$c" ] && [ -f "$c/damBreach.summary" ] && cases="$cases ${c#./}"
+    [ -f "$c/damBreach.summary" ] && cases="$cases $c"
 done
 /usr/bin/python3 damBreachAnalysis.py coarseness results small $cases

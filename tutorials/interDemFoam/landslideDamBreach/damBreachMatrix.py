@@ -641,6 +641,32 @@ VARIANTS = {
 }
 
 
+EARLIER = ' [earlier run: no case on disk]'
+
+
+def earlier_rows(path, measured):
+    """The rows of an existing chart file whose variant is not among those
+    measured now (its case is not on this disk): kept, their description
+    marked, so that rerunning one variant does not drop the others."""
+    kept = []
+    if not os.path.isfile(path):
+        return kept
+    for line in open(path):
+        if line.startswith('#') or not line.strip():
+            continue
+        w = line.split()
+        if len(w) < 7 or (w[0], w[1]) in measured:
+            continue
+        description = line.split(None, 6)[6].rstrip('\n')
+        if not description.endswith(EARLIER):
+            description += EARLIER
+        kept.append((w[0], w[1], description, float(w[2]), float(w[3]),
+                     float(w[4]), float(w[5])))
+        print('coarseness: %s %s kept from %s (its case is not on disk)'
+              % (w[0], w[1], path))
+    return kept
+
+
 def coarseness(out, scale, cases):
     """Residual height and overtopping time of each variant against its
     wall time: coarseness.<scale>.dat and .png in out."""
@@ -657,6 +683,7 @@ def coarseness(out, scale, cases):
                      s['overtopping from t [s] (-1: none)'],
                      s['end time [s]'], cpu_time(case)))
     path = os.path.join(out, 'coarseness.%s.dat' % scale)
+    rows += earlier_rows(path, set((r[0], r[1]) for r in rows))
     with open(path, 'w') as f:
         f.write('# How coarse can the scene be: variants of C2 and F2, %s '
                 'scale (coarseness.sh)\n# scenario variant Hres_m '
@@ -670,8 +697,9 @@ def coarseness(out, scale, cases):
         colour = 'tab:blue' if r[0] == 'C2' else 'tab:red'
         marker = '*' if r[1] == 'tutorial' else 'o'
         size = 16 if r[1] == 'tutorial' else 7
+        face = 'none' if r[2].endswith(EARLIER) else colour
         for k, y in ((0, 1000*r[3]), (1, r[4])):
-            ax[k].plot(r[6]/60, y, marker, color=colour, ms=size)
+            ax[k].plot(r[6]/60, y, marker, color=colour, mfc=face, ms=size)
             ax[k].annotate('%s %s' % (r[0], r[1]), (r[6]/60, y), fontsize=7,
                            xytext=(4, 3), textcoords='offset points')
     ax[0].set(xlabel='CPU time of the run [min]',
@@ -679,7 +707,8 @@ def coarseness(out, scale, cases):
               title='Residual height against cost (star: the tutorial)')
     ax[1].set(xlabel='CPU time of the run [min]',
               ylabel='overtopping time [s] (-1: none)',
-              title='Overtopping time against cost (blue C2, red F2)')
+              title='Overtopping time against cost (blue C2, red F2; '
+                    'open: earlier run)')
     fig.tight_layout()
     fig.savefig(os.path.join(out, 'coarseness.%s.png' % scale), dpi=110)
     print('Written: %s/coarseness.%s.dat, .png' % (out, scale))
