@@ -31,8 +31,11 @@ cd "${0%/*}" || exit                                # Run from this directory
 #            a round-off spread
 #   co045    C2 at maxCo 0.45 (steps 10 % shorter than the tutorial's): the
 #            spread of the numerics the others are judged against
+#   Fcentre  F2, the centre void-fraction model (F's 10-20 mm grains are a
+#            fifth to two fifths of a cell)
+#   Fco045   F2 at maxCo 0.45: F's spread of the numerics
 #------------------------------------------------------------------------------
-all="dry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045"
+all="dry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045"
 variants=${*:-$all}
 
 options()
@@ -50,6 +53,8 @@ options()
         semiCo2) echo "-scenario C2 -semiImplicitAlpha -maxCo 2" ;;
         ranks2)  echo "-scenario C2 -parallel 2" ;;
         co045)   echo "-scenario C2 -maxCo 0.45" ;;
+        Fcentre) echo "-scenario F2 -voidFraction centre" ;;
+        Fco045)  echo "-scenario F2 -maxCo 0.45" ;;
         *) return 1 ;;
     esac
 }

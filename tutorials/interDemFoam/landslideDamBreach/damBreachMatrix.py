@@ -638,6 +638,8 @@ VARIANTS = {
     'semiCo2final': 'semi-implicit MULES, maxCo 2, rerun with the drag base',
     'ranks2': 'the tutorial on 2 MPI ranks (round-off spread; CPU of one rank)',
     'co045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
+    'Fcentre': 'centre void fraction',
+    'Fco045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
 }
 
 
