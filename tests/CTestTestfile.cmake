@@ -146,6 +146,9 @@ set_tests_properties(case.liftMagnus PROPERTIES LABELS "case;coupled;forces" TIM
 add_test(case.damGrading "bash" "cases/damGrading.sh")
 set_tests_properties(case.damGrading PROPERTIES LABELS "case;damBreach" TIMEOUT 400)
 
+add_test(case.breachEnded "bash" "cases/breachEnded.sh")
+set_tests_properties(case.breachEnded PROPERTIES LABELS "case;damBreach" TIMEOUT 60)
+
 # Quiet dense beds: plate pressure of a bed at rest (std <= 1 % of its
 # weight) and fluidized (<= 5 %); the former scheme must fail
 add_test(case.quietBed "bash" "cases/quietBed.sh")

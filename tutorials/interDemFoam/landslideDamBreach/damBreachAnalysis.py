@@ -402,7 +402,8 @@ def ended(case, window, tolerance, max_time):
                               else 'still changing'))
     if not done and t_end >= max_time - 1e-6:
         print('%s: NOT ENDED: the run has reached %g s, the longest run of '
-              'its scale; stopped and analysed as it is' % (case, max_time))
+              'its scale (Allrun -maxTime); stopped and analysed as it is'
+              % (case, max_time))
         return True
     return done
 
