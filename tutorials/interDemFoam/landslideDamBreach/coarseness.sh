@@ -34,8 +34,9 @@ cd "${0%/*}" || exit                                # Run from this directory
 #   Fcentre  F2, the centre void-fraction model (F's 10-20 mm grains are a
 #            fifth to two fifths of a cell)
 #   Fco045   F2 at maxCo 0.45: F's spread of the numerics
+#   Flift    F2 with Saffman and Magnus lift
 #------------------------------------------------------------------------------
-all="dry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045"
+all="dry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift"
 variants=${*:-$all}
 
 options()
@@ -55,6 +56,7 @@ options()
         co045)   echo "-scenario C2 -maxCo 0.45" ;;
         Fcentre) echo "-scenario F2 -voidFraction centre" ;;
         Fco045)  echo "-scenario F2 -maxCo 0.45" ;;
+        Flift)   echo "-scenario F2 -forces \"DiFeliceDrag pressureGradient SaffmanLift MagnusLift\"" ;;
         *) return 1 ;;
     esac
 }

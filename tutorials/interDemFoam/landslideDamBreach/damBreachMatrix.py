@@ -640,6 +640,7 @@ VARIANTS = {
     'co045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
     'Fcentre': 'centre void fraction',
     'Fco045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
+    'Flift': 'Saffman + Magnus lift',
 }
 
 
