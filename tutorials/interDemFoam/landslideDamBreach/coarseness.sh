@@ -39,6 +39,8 @@ cd "${0%/*}" || exit                                # Run from this directory
 all="dry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift"
 variants=${*:-$all}
 
+# the force models of the lift variants (the tutorial's plus both lifts)
+liftForces="DiFeliceDrag pressureGradient SaffmanLift MagnusLift"
 options()
 {
     case "$1" in
@@ -47,7 +49,7 @@ options()
         w02)     echo "-scenario C2 -width 0.2" ;;
         divided) echo "-scenario C2 -voidFraction divided" ;;
         centre)  echo "-scenario C2 -voidFraction centre" ;;
-        lift)    echo "-scenario C2 -forces \"DiFeliceDrag pressureGradient SaffmanLift MagnusLift\"" ;;
+        lift)    echo "-scenario C2 -forces \"$liftForces\"" ;;
         Fcoarse) echo "-scenario F2 -grading Fcoarse" ;;
         cell25)  echo "-scenario C2 -cellSize 0.025" ;;
         semiCo1) echo "-scenario C2 -semiImplicitAlpha -maxCo 1" ;;
@@ -56,7 +58,7 @@ options()
         co045)   echo "-scenario C2 -maxCo 0.45" ;;
         Fcentre) echo "-scenario F2 -voidFraction centre" ;;
         Fco045)  echo "-scenario F2 -maxCo 0.45" ;;
-        Flift)   echo "-scenario F2 -forces \"DiFeliceDrag pressureGradient SaffmanLift MagnusLift\"" ;;
+        Flift)   echo "-scenario F2 -forces \"$liftForces\"" ;;
         *) return 1 ;;
     esac
 }
