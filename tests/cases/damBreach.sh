@@ -12,10 +12,13 @@
 #   - the lake overtops the crest (freeboard < 0), and the crest loses more
 #     than the smallest grain diameter (20 mm) after it does,
 #   - water volume balance in - out - storage closes to 1 % of the inflow,
-#   - tables, plots and the ParaView files are written.
+#   - tables, plots and the ParaView files are written,
+#   - the matrix analysis on this one run of eight reports no finding as
+#     holding: its count reads 0 of 12 and names the seven missing runs.
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
-# one of these lines, and on an empty one.
+# one of these lines, and on an empty one; the matrix check fails on a copy
+# of the analysis that ignores the missing runs.
 . "$(dirname "$0")/caseFunctions.sh"
 
 copyTutorial landslideDamBreach damBreach
@@ -73,6 +76,42 @@ done
 rm -f summary.broken
 
 summaryChecks "$case"/damBreach.summary
+
+# matrixChecks <dir of damBreachAnalysis.py>: the findings of the matrix
+# analysis run on this one scenario. With seven of the eight runs missing no
+# finding may be reported as holding (a check that passes on missing data):
+# the count line says 0 of 12 and names the missing runs, and no finding
+# reads plain "holds" (at most "holds on the runs present").
+matrixChecks()
+{
+    local out="matrix.$(basename "$1")" count
+    rm -rf "$out"
+    /usr/bin/python3 "$1"/damBreachAnalysis.py matrix "$out" small "$case" \
+        > "$out.log" 2>&1 || { tail -5 "$out.log"; fail "the matrix analysis failed ($out.log)"; }
+    [ -s "$out/findings.small.txt" ] || fail "no $out/findings.small.txt"
+    [ "$(grep -c '^P[0-9]* ' "$out/findings.small.txt")" = 12 ] \
+        || fail "$out/findings.small.txt does not list the 12 findings"
+    count=$(grep '^# [0-9]* of 12 hold' "$out/findings.small.txt")
+    case "$count" in
+        "# 0 of 12 hold: 7 of the eight runs missing (C1 C2 C3 F1 F2 F3 F4);"*) ;;
+        *) fail "with seven runs missing the findings count reads '$count'" ;;
+    esac
+    ! grep -E '^P[0-9]+ holds:' "$out/findings.small.txt" \
+        || fail "a finding holds on one run of eight"
+    echo "matrix on one run: $count"
+}
+
+# negative control: the same analysis with the missing runs ignored
+analysisDir="$INTERDEMFOAM_TUTORIALS/landslideDamBreach"
+mkdir -p ignoreMissing
+cp "$analysisDir"/damBreach*.py ignoreMissing/
+sed -i 's/^\(    missing = \).*/\1[]/' ignoreMissing/damBreachMatrix.py
+grep -q '^    missing = \[\]$' ignoreMissing/damBreachMatrix.py \
+    || fail "negative control: cannot remove the missing runs"
+msg=$( (matrixChecks "$PWD/ignoreMissing") 2>&1 ) \
+    && fail "the matrix checks pass with the missing runs ignored"
+echo "negative control, missing runs ignored: ${msg##*FAIL: }"
+matrixChecks "$analysisDir"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"
