@@ -14,11 +14,13 @@
 #   - water volume balance in - out - storage closes to 1 % of the inflow,
 #   - tables, plots and the ParaView files are written,
 #   - the matrix analysis on this one run of eight reports no finding as
-#     holding: its count reads 0 of 12 and names the seven missing runs.
+#     holding: its count reads 0 of 12 and names the seven missing runs,
+#   - the rankings of the findings fail on a list with a value missing.
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy
-# of the analysis that ignores the missing runs.
+# of the analysis that ignores the missing runs, the ranking check on one that
+# drops missing values.
 . "$(dirname "$0")/caseFunctions.sh"
 
 copyTutorial landslideDamBreach damBreach
@@ -112,6 +114,29 @@ msg=$( (matrixChecks "$PWD/ignoreMissing") 2>&1 ) \
     && fail "the matrix checks pass with the missing runs ignored"
 echo "negative control, missing runs ignored: ${msg##*FAIL: }"
 matrixChecks "$analysisDir"
+
+# rankingCheck <dir>: the rankings of P6, P7, P9 and P11 (decreasing()) fail
+# when a value is missing or NaN, and hold on a complete decreasing list
+rankingCheck()
+{
+    /usr/bin/python3 - "$1" <<'EOF' || fail "decreasing() passes a ranking with a value missing"
+import math, sys
+sys.path.insert(0, sys.argv[1])
+import damBreachMatrix as m
+ok = m.decreasing([0.2, 0.15, 0.1]) and not m.decreasing([0.2, 0.25]) \
+    and not m.decreasing([0.2, math.nan, 0.1]) \
+    and not m.decreasing([0.2, None, 0.1]) and not m.decreasing([0.2])
+sys.exit(0 if ok else 1)
+EOF
+}
+sed -i 's/^\(    if \)any(x is None or np.isnan(x) for x in v):$/\1False:/' \
+    ignoreMissing/damBreachMatrix.py
+grep -q '^    if False:$' ignoreMissing/damBreachMatrix.py \
+    || fail "negative control: cannot remove the missing-value guard"
+msg=$( (rankingCheck "$PWD/ignoreMissing") 2>&1 ) \
+    && fail "the ranking check passes with missing values dropped"
+echo "negative control, missing values dropped: ${msg##*FAIL: }"
+rankingCheck "$analysisDir"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"

@@ -271,7 +271,11 @@ def fmt(v, f='%.3g'):
 
 
 def decreasing(values):
-    v = [x for x in values if x is not None and not np.isnan(x)]
+    """Strictly decreasing, at least two values, none missing (a missing or
+    NaN value is no pass)."""
+    v = list(values)
+    if any(x is None or np.isnan(x) for x in v):
+        return False
     return len(v) >= 2 and all(a > b for a, b in zip(v, v[1:]))
 
 
