@@ -103,17 +103,26 @@ matrixChecks()
     echo "matrix on one run: $count"
 }
 
-# negative control: the same analysis with the missing runs ignored
 analysisDir="$INTERDEMFOAM_TUTORIALS/landslideDamBreach"
-mkdir -p ignoreMissing
-cp "$analysisDir"/damBreach*.py ignoreMissing/
-sed -i 's/^\(    missing = \).*/\1[]/' ignoreMissing/damBreachMatrix.py
-grep -q '^    missing = \[\]$' ignoreMissing/damBreachMatrix.py \
-    || fail "negative control: cannot remove the missing runs"
-msg=$( (matrixChecks "$PWD/ignoreMissing") 2>&1 ) \
-    && fail "the matrix checks pass with the missing runs ignored"
-echo "negative control, missing runs ignored: ${msg##*FAIL: }"
-matrixChecks "$analysisDir"
+
+# breakAnalysis <dir> <sed expression> <the line it leaves>: a copy of the
+# analysis in <dir> with one guard of damBreachMatrix.py removed
+breakAnalysis()
+{
+    rm -rf "$1" && mkdir -p "$1" && cp "$analysisDir"/damBreach*.py "$1"/ \
+        || fail "negative control: cannot copy the analysis to $1"
+    sed -i "$2" "$1"/damBreachMatrix.py
+    grep -Fqx -- "$3" "$1"/damBreachMatrix.py \
+        || fail "negative control: cannot remove the guard in $1"
+}
+
+# mustFail <check function> <analysis dir> <what was removed>
+mustFail()
+{
+    local msg
+    msg=$( ($1 "$2") 2>&1 ) && fail "$1 passes with $3"
+    echo "negative control, $3: ${msg##*FAIL: }"
+}
 
 # rankingCheck <dir>: the rankings of P6, P7, P9 and P11 (decreasing()) fail
 # when a value is missing or NaN, and hold on a complete decreasing list
@@ -129,13 +138,14 @@ ok = m.decreasing([0.2, 0.15, 0.1]) and not m.decreasing([0.2, 0.25]) \
 sys.exit(0 if ok else 1)
 EOF
 }
-sed -i 's/^\(    if \)any(x is None or np.isnan(x) for x in v):$/\1False:/' \
-    ignoreMissing/damBreachMatrix.py
-grep -q '^    if False:$' ignoreMissing/damBreachMatrix.py \
-    || fail "negative control: cannot remove the missing-value guard"
-msg=$( (rankingCheck "$PWD/ignoreMissing") 2>&1 ) \
-    && fail "the ranking check passes with missing values dropped"
-echo "negative control, missing values dropped: ${msg##*FAIL: }"
+
+breakAnalysis ignoreMissing 's/^\(    missing = \).*/\1[]/' '    missing = []'
+mustFail matrixChecks "$PWD/ignoreMissing" "the missing runs ignored"
+breakAnalysis dropMissing \
+    's/^\(    if \)any(x is None or np.isnan(x) for x in v):$/\1False:/' \
+    '    if False:'
+mustFail rankingCheck "$PWD/dropMissing" "missing values dropped"
+matrixChecks "$analysisDir"
 rankingCheck "$analysisDir"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
