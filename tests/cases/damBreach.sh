@@ -19,8 +19,9 @@
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy
-# of the analysis that ignores the missing runs, the ranking check on one that
-# drops missing values.
+# of the analysis that ignores the missing runs and on one that writes plain
+# "holds", the ranking check on one that drops missing values (the old
+# decreasing()); each must fail for the reason it guards.
 . "$(dirname "$0")/caseFunctions.sh"
 
 copyTutorial landslideDamBreach damBreach
@@ -116,11 +117,17 @@ breakAnalysis()
         || fail "negative control: cannot remove the guard in $1"
 }
 
-# mustFail <check function> <analysis dir> <what was removed>
+# mustFail <check function> <analysis dir> <what was removed> <expected
+# failure text>: the check fails on the broken copy, and for the reason it
+# guards (not by a crash of the copy)
 mustFail()
 {
     local msg
     msg=$( ($1 "$2") 2>&1 ) && fail "$1 passes with $3"
+    case "$msg" in
+        *"FAIL: "*"$4"*) ;;
+        *) echo "$msg" | tail -5; fail "$1 fails with $3, but not for '$4'" ;;
+    esac
     echo "negative control, $3: ${msg##*FAIL: }"
 }
 
@@ -128,25 +135,39 @@ mustFail()
 # when a value is missing or NaN, and hold on a complete decreasing list
 rankingCheck()
 {
-    /usr/bin/python3 - "$1" <<'EOF' || fail "decreasing() passes a ranking with a value missing"
+    local wrong
+    wrong=$(/usr/bin/python3 - "$1" <<'EOF'
 import math, sys
 sys.path.insert(0, sys.argv[1])
 import damBreachMatrix as m
-ok = m.decreasing([0.2, 0.15, 0.1]) and not m.decreasing([0.2, 0.25]) \
-    and not m.decreasing([0.2, math.nan, 0.1]) \
-    and not m.decreasing([0.2, None, 0.1]) and not m.decreasing([0.2])
-sys.exit(0 if ok else 1)
+cases = [([0.2, 0.15, 0.1], True), ([0.2, 0.25], False), ([0.2], False),
+         ([0.2, math.nan, 0.1], False), ([math.nan, 0.2, 0.1], False),
+         ([0.2, None, 0.1], False)]
+for values, expected in cases:
+    try:
+        got = m.decreasing(values)
+    except Exception as e:
+        got = 'error %s' % type(e).__name__
+    if got != expected:
+        print('%s -> %s' % (values, got))
 EOF
+) || fail "the ranking check could not run: $wrong"
+    [ -z "$wrong" ] || fail "decreasing() ranks wrongly: $(echo $wrong)"
 }
 
 breakAnalysis ignoreMissing 's/^\(    missing = \).*/\1[]/' '    missing = []'
-mustFail matrixChecks "$PWD/ignoreMissing" "the missing runs ignored"
-breakAnalysis dropMissing \
-    's/^\(    if \)any(x is None or np.isnan(x) for x in v):$/\1False:/' \
-    '    if False:'
-mustFail rankingCheck "$PWD/dropMissing" "missing values dropped"
-matrixChecks "$analysisDir"
-rankingCheck "$analysisDir"
+mustFail matrixChecks "$PWD/ignoreMissing" "the missing runs ignored" \
+    "findings count reads"
+breakAnalysis plainHolds "s/('holds on the runs present' if\$/('holds' if/" \
+    "            f.write('%s %s: %s\\n' % (key, ('holds' if"
+mustFail matrixChecks "$PWD/plainHolds" "plain holds on one run" \
+    "a finding holds on one run of eight"
+dropped='    v = [x for x in values if x is not None and not np.isnan(x)]'
+breakAnalysis dropMissing "s/^    v = list(values)\$/$dropped/" "$dropped"
+mustFail rankingCheck "$PWD/dropMissing" "missing values dropped" \
+    "decreasing() ranks wrongly"
+matrixChecks "$PWD"
+rankingCheck "$PWD"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"
