@@ -620,10 +620,10 @@ def main(out, scale, cases):
                    if missing else ''))
         # with runs missing no finding is shown for the seed's matrix: what
         # holds for the runs present says so, and the count is not 'hold'
+        holds = 'holds on the runs present' if missing else 'holds'
         for key, claim, ev, ok in res:
-            f.write('%s %s: %s\n' % (key, ('holds on the runs present' if
-                                           missing else 'holds') if ok else
-                                     'does not hold', claim))
+            f.write('%s %s: %s\n' % (key, holds if ok else 'does not hold',
+                                     claim))
             for e in ev:
                 f.write('    %s\n' % e)
         held = sum(ok for *_, ok in res)
