@@ -6,7 +6,7 @@
 # landslideDamBreach/damBreachAnalysis.py ended, which Allrun calls after
 # each piece of a run): a run goes on while the dam height changed by 5 mm or
 # more over the last 20 s, and stops at the longest run (Allrun -maxTime,
-# default 100 s at small scale) saying NOT ENDED. Seconds, no solver: the
+# default 200 s at small scale) saying NOT ENDED. Seconds, no solver: the
 # rule is applied to synthetic LIGGGHTS dumps (every 0.5 s) of one resting
 # grain whose top is the dam height H(t), a straight line, so that the height
 # change over 20 s is known exactly: 0.5 mm/s -> 10 mm, 0.15 mm/s -> 3 mm.

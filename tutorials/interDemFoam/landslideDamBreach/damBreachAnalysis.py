@@ -9,7 +9,7 @@
     damBreachAnalysis.py grading BUILD [--out FILE] [--grains FILE]
                                               the grading of a poured dam
     damBreachAnalysis.py ended CASE [--window 20] [--tolerance 0.005]
-                               [--maxTime 100]
+                               [--maxTime 200]
                                               exit 0 when the run should stop:
                                               the breach has ended (or the
                                               run has reached maxTime)
@@ -737,7 +737,7 @@ if __name__ == '__main__':
         ap.add_argument('case')
         ap.add_argument('--window', type=float, default=20.0)
         ap.add_argument('--tolerance', type=float, default=0.005)
-        ap.add_argument('--maxTime', type=float, default=100.0)
+        ap.add_argument('--maxTime', type=float, default=200.0)
         a = ap.parse_args(sys.argv[2:])
         sys.exit(0 if ended(a.case, a.window, a.tolerance, a.maxTime)
                  else 1)
