@@ -4,20 +4,28 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # The landslide dam's run-length rule (tutorials/interDemFoam/
 # landslideDamBreach/damBreachAnalysis.py ended, which Allrun calls after
-# each piece of a run): a run goes on while the dam height changed by 5 mm or
-# more over the last 20 s, and stops at the longest run (Allrun -maxTime,
-# default 200 s at small scale) saying NOT ENDED. Seconds, no solver: the
-# rule is applied to synthetic LIGGGHTS dumps (every 0.5 s) of one resting
-# grain whose top is the dam height H(t), a straight line, so that the height
-# change over 20 s is known exactly: 0.5 mm/s -> 10 mm, 0.15 mm/s -> 3 mm.
-# Checks (exit status and the printed change, to 0.1 mm):
+# each piece of a run): a run goes on while, over the last 20 s, the dam
+# height changed by 5 mm or more or the total energy [E] by 0.02 or more
+# (grains still leave the dam), and stops at the longest run (Allrun
+# -maxTime, default 200 s at small scale) saying NOT ENDED. Seconds, no
+# solver: the rule is applied to synthetic LIGGGHTS dumps (every 0.5 s, g
+# straight down) of one light crest grain (1 g) whose top is the dam height
+# H(t), a straight line, above 100 resting grains of 10 g centred at 0.1 m,
+# of which one leaves every P s; so the changes over 20 s are known exactly:
+# H lowers 0.5 mm/s -> 10 mm, 0.15 mm/s -> 3 mm (and [E] by under 0.001);
+# a grain every 4 s -> [E] 0.850 -> 0.800 (0.050), every 20 s -> 0.010.
+# Checks (exit status, the printed height change to 0.1 mm and the printed
+# [E] change to 0.001):
 #   - 10 mm over 20 s at 80 s, longest run 100 s: still changing (go on);
 #   - 3 mm over 20 s at 80 s: the breach has ended (stop);
+#   - height steady, [E] 0.050 over 20 s at 80 s: still changing (go on);
+#   - height steady, [E] 0.010 over 20 s at 80 s: the breach has ended;
 #   - 10 mm over 20 s at 100 s, longest run 100 s: stop, NOT ENDED;
 #   - the same at 100 s with -maxTime 200: still changing (go on).
-# Negative controls: the checks fail on copies of the rule with the
-# tolerance ignored (every run "ended") and with the longest run ignored
-# (a run never stops).
+# Negative controls: the checks fail on copies of the rule with both
+# tolerances ignored (every run "ended"), with the [E] tolerance ignored
+# (grains leaving do not count) and with the longest run ignored (a run
+# never stops).
 . "$(dirname "$0")/caseFunctions.sh"
 
 analysis="$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreachAnalysis.py"
@@ -26,35 +34,45 @@ rm -rf "$runDir/breachEnded"
 mkdir -p "$runDir/breachEnded"
 cd "$runDir/breachEnded" || fail "cannot enter $runDir/breachEnded"
 
-# synthCase <name> <end time s> <lowering rate m/s>: H(t) = 0.25 - rate t
+# synthCase <name> <end time s> <lowering rate m/s> <period s (0: none)>:
+# the crest grain's top H(t) = 0.25 - rate t above 100 - floor(t/period)
+# resting grains
 synthCase()
 {
-    mkdir -p "$1/DEM" "$1/post"
+    mkdir -p "$1/DEM" "$1/post" "$1/constant"
     echo "variable demDt index 1e-4" > "$1/DEM/in.case"
-    /usr/bin/python3 - "$1" "$2" "$3" <<'EOF' || fail "cannot write the dumps of $1"
+    echo "value ( 0 0 -9.81 );" > "$1/constant/g"
+    /usr/bin/python3 - "$@" <<'EOF' || fail "cannot write the dumps of $1"
 import sys
-case, t_end, rate = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+case = sys.argv[1]
+t_end, rate, period = (float(v) for v in sys.argv[2:5])
 r = 0.01
 for k in range(int(round(t_end/0.5)) + 1):
     t = 0.5*k
     step = int(round(t/1e-4))
     top = 0.25 - rate*t
+    n = 100 - (int(t/period + 1e-9) if period > 0 else 0)
+    rows = ['1 %g 0.001 3.5 0.05 %.9f 0 0 0' % (r, top - r)]
+    rows += ['%d %g 0.01 3.5 0.05 0.1 0 0 0' % (2 + i, r) for i in range(n)]
     with open('%s/post/particles.%d.txt' % (case, step), 'w') as f:
-        f.write('ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n1\n'
+        f.write('ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\n'
                 'ITEM: BOX BOUNDS ff pp ff\n-0.1 7.1\n0 0.1\n0 0.6\n'
-                'ITEM: ATOMS id radius mass x y z vx vy vz\n'
-                '1 %g 0.01 3.5 0.05 %.9f 0 0 0\n' % (step, r, top - r))
+                'ITEM: ATOMS id radius mass x y z vx vy vz\n%s\n'
+                % (step, len(rows), '\n'.join(rows)))
 EOF
 }
-synthCase changing80 80 0.0005
-synthCase slowing80 80 0.00015
-synthCase changing100 100 0.0005
+synthCase changing80 80 0.0005 0
+synthCase slowing80 80 0.00015 0
+synthCase losing80 80 0 4
+synthCase shedding80 80 0 20
+synthCase changing100 100 0.0005 0
 
-# ruleChecks <analysis script>: the four cases of the header
+# ruleChecks <analysis script>: the six cases of the header
 ruleChecks()
 {
     local py="$1" out rc change
-    # expect <case> <maxTime> <exit status> <printed change mm> <text>
+    # expect <case> <maxTime> <exit status> <printed height change mm>
+    #        <printed [E] change> <text>
     expect()
     {
         out=$(/usr/bin/python3 "$py" ended "$1" --window 20 --tolerance 0.005 \
@@ -64,19 +82,26 @@ ruleChecks()
         [ "$rc" = "$3" ] || fail "$1 (longest run $2 s): exit $rc, expected $3"
         change=$(echo "$out" | sed -n 's/.*: change \([0-9.]*\) mm.*/\1/p' | head -1)
         check "height change of $1" "$change" "v >= $4 - 0.1 && v <= $4 + 0.1" \
-            "$1: printed change '$change' mm, expected $4 mm"
-        echo "$out" | grep -q "$5" || fail "$1 (longest run $2 s): no '$5' in: $out"
+            "$1: printed height change '$change' mm, expected $4 mm"
+        change=$(echo "$out" | sed -n 's/.*\[E\] [0-9.]* -> [0-9.]*: change \([0-9.]*\) .*/\1/p' | head -1)
+        check "[E] change of $1" "$change" "v >= $5 - 0.001 && v <= $5 + 0.001" \
+            "$1: printed [E] change '$change', expected $5"
+        echo "$out" | grep -q "$6" || fail "$1 (longest run $2 s): no '$6' in: $out"
     }
-    expect changing80 100 1 10.0 'still changing'
-    expect slowing80 100 0 3.0 'the breach has ended'
-    expect changing100 100 0 10.0 'NOT ENDED'
-    expect changing100 200 1 10.0 'still changing'
+    expect changing80 100 1 10.0 0.000 'still changing'
+    expect slowing80 100 0 3.0 0.000 'the breach has ended'
+    expect losing80 100 1 0.0 0.050 'still changing'
+    expect shedding80 100 0 0.0 0.010 'the breach has ended'
+    expect changing100 100 0 10.0 0.000 'NOT ENDED'
+    expect changing100 200 1 10.0 0.000 'still changing'
 }
 
-# negative controls: the rule broken in two ways must fail the checks
-sed 's/done = change < tolerance/done = True/' "$analysis" > noTolerance.py
+# negative controls: the rule broken in three ways must fail the checks
+rule='done = change < tolerance and e_change < energy_tolerance'
+sed "s/$rule/done = True/" "$analysis" > noTolerance.py
+sed "s/$rule/done = change < tolerance/" "$analysis" > noEnergy.py
 sed 's/t_end >= max_time - 1e-6/False/' "$analysis" > noLongestRun.py
-for broken in noTolerance noLongestRun
+for broken in noTolerance noEnergy noLongestRun
 do
     cmp -s "$analysis" $broken.py && fail "negative control $broken: the rule's line was not found"
     msg=$( (ruleChecks $broken.py) 2>&1 ) \
@@ -85,4 +110,4 @@ do
 done
 
 ruleChecks "$analysis"
-pass "the run goes on at 10 mm / 20 s, stops at 3 mm / 20 s, and stops NOT ENDED at the longest run (100 s; not at -maxTime 200)"
+pass "the run goes on at 10 mm or [E] 0.050 over 20 s, stops at 3 mm and [E] 0.010 over 20 s, and stops NOT ENDED at the longest run (100 s; not at -maxTime 200)"

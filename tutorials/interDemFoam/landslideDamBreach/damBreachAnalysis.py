@@ -9,10 +9,11 @@
     damBreachAnalysis.py grading BUILD [--out FILE] [--grains FILE]
                                               the grading of a poured dam
     damBreachAnalysis.py ended CASE [--window 20] [--tolerance 0.005]
-                               [--maxTime 200]
+                               [--energyTolerance 0.02] [--maxTime 200]
                                               exit 0 when the run should stop:
-                                              the breach has ended (or the
-                                              run has reached maxTime)
+                                              the breach has ended (H and [E]
+                                              level over the window) or the
+                                              run has reached maxTime
     damBreachAnalysis.py matrix DIR SCALE CASE...
                                               all eight scenarios: the matrix,
                                               the findings, Figs. 8-11
@@ -78,6 +79,8 @@ RAYLEIGH_LIMIT = 0.2       # largest DEM step / Rayleigh time of the smallest
 REST_SPEED = 0.05      # m/s: a grain slower than this is part of the bed
 BIN = 0.05             # m: profile bins (the CFD cell size)
 FLUME_LENGTH = 7.0
+LEVEL_ENERGY = 0.02    # [E] changed by less than this over 20 s: levelled off
+                       # (P9; the run-length rule of ended)
 
 
 def read_gravity(case):
@@ -369,22 +372,51 @@ def height_change(case, window):
     return h_before, h_end, t_end
 
 
-def ended(case, window, tolerance, max_time):
-    """True when the run should stop: the dam height changed by less than
-    tolerance over the last window seconds (the breach has ended), or the
-    run has reached max_time (the longest run of its scale; said so)."""
+def energy_change(case, window):
+    """[E] (E/E(0), the dumps' total energy as in analyse) at the dump
+    nearest t_end - window and at the last dump t_end: (E_before, E_end);
+    None when the run is shorter than the window (plus 2 s)."""
+    dumps = dump_files(case, 'particles')
+    t_end = dumps[-1][0]
+    if t_end < window + 2.0:
+        return None
+    g = read_gravity(case)
+    times = np.array([t for t, f in dumps])
+    before = dumps[int(np.argmin(np.abs(times - (t_end - window))))][1]
+    e = []
+    for path in (dumps[0][1], before, dumps[-1][1]):
+        p = read_dump(path)
+        e.append(sum(energy(p, g)) if p.size else 0.0)
+    if not e[0] > 0:
+        sys.exit('damBreachAnalysis: no energy in the first dump of %s/post'
+                 % case)
+    return e[1]/e[0], e[2]/e[0]
+
+
+def emptied(case):
+    """The first <time>/liggghts.restart.emptied of the case (serial or
+    processor0), or None: when every grain has gone the solver writes it
+    instead of a DEM state, and nothing is left to erode."""
+    found = sorted(glob.glob(os.path.join(case, '[0-9]*',
+                                          'liggghts.restart.emptied'))
+                   + glob.glob(os.path.join(case, 'processor0', '[0-9]*',
+                                            'liggghts.restart.emptied')))
+    return found[0] if found else None
+
+
+def ended(case, window, tolerance, max_time, energy_tolerance):
+    """True when the run should stop: over the last window seconds the dam
+    height changed by less than tolerance and [E] by less than
+    energy_tolerance (the breach has ended: the dam neither lowers nor loses
+    grains), or the run has reached max_time (the longest run of its scale;
+    said so)."""
     dumps = dump_files(case, 'particles')
     if not dumps:
         sys.exit('damBreachAnalysis: no dumps in %s/post' % case)
-    # every grain gone: the solver writes <time>/liggghts.restart.emptied
-    # instead of a DEM state, and nothing is left to erode
-    emptied = sorted(glob.glob(os.path.join(case, '[0-9]*',
-                                            'liggghts.restart.emptied'))
-                     + glob.glob(os.path.join(case, 'processor0', '[0-9]*',
-                                              'liggghts.restart.emptied')))
-    if emptied:
+    gone = emptied(case)
+    if gone:
         print('%s: every grain has left the flume (%s): the breach has ended'
-              % (case, os.path.relpath(emptied[0], case)))
+              % (case, os.path.relpath(gone, case)))
         return True
     change_of = height_change(case, window)
     if change_of is None:
@@ -392,14 +424,17 @@ def ended(case, window, tolerance, max_time):
               % (case, dumps[-1][0], window))
         return False
     h_before, h_end, t_end = change_of
+    e_before, e_end = energy_change(case, window)
     change = abs(h_end - h_before)
-    done = change < tolerance
+    e_change = abs(e_end - e_before)
+    done = change < tolerance and e_change < energy_tolerance
     print('%s: dam height %.4f m at %.1f s, %.4f m at %.1f s: change %.1f mm '
-          '%s %.1f mm: %s' % (case, h_before, t_end - window, h_end, t_end,
-                              1000*change, '<' if done else '>=',
-                              1000*tolerance,
-                              'the breach has ended' if done
-                              else 'still changing'))
+          '%s %.1f mm; [E] %.3f -> %.3f: change %.3f %s %.3f: %s'
+          % (case, h_before, t_end - window, h_end, t_end, 1000*change,
+             '<' if change < tolerance else '>=', 1000*tolerance,
+             e_before, e_end, e_change,
+             '<' if e_change < energy_tolerance else '>=', energy_tolerance,
+             'the breach has ended' if done else 'still changing'))
     if not done and t_end >= max_time - 1e-6:
         print('%s: NOT ENDED: the run has reached %g s, the longest run of '
               'its scale (Allrun -maxTime); stopped and analysed as it is'
@@ -737,10 +772,12 @@ if __name__ == '__main__':
         ap.add_argument('case')
         ap.add_argument('--window', type=float, default=20.0)
         ap.add_argument('--tolerance', type=float, default=0.005)
+        ap.add_argument('--energyTolerance', type=float,
+                        default=LEVEL_ENERGY)
         ap.add_argument('--maxTime', type=float, default=200.0)
         a = ap.parse_args(sys.argv[2:])
-        sys.exit(0 if ended(a.case, a.window, a.tolerance, a.maxTime)
-                 else 1)
+        sys.exit(0 if ended(a.case, a.window, a.tolerance, a.maxTime,
+                            a.energyTolerance) else 1)
     elif len(sys.argv) >= 5 and sys.argv[1] == 'matrix':
         import damBreachMatrix
         sys.exit(damBreachMatrix.main(sys.argv[2], sys.argv[3], sys.argv[4:]))

@@ -233,7 +233,11 @@ class Run:
         change_of = dba.height_change(self.case, 20)
         self.ended_change = abs(change_of[1] - change_of[0]) \
             if change_of else np.nan
-        self.ended = change_of is not None and self.ended_change < 0.005
+        e_of = dba.energy_change(self.case, 20) if change_of else None
+        self.ended_energy = abs(e_of[1] - e_of[0]) if e_of else np.nan
+        self.ended = dba.emptied(self.case) is not None or \
+            (change_of is not None and self.ended_change < 0.005
+             and self.ended_energy < dba.LEVEL_ENERGY)
         self.failed = self.Hres < FAILED*self.H0
         self.t_toe = self.t_back = self.t_head = self.t_end = None
         toe = (self.centres >= TOE - 0.25) & (self.centres <= TOE)
@@ -308,13 +312,13 @@ def findings(runs):
         in_crest = CREST[0] - dba.BIN <= r.x_failure <= CREST[1] + dba.BIN
         ok = r.t_over < 0 and in_crest and r.ended
         ev = ['C1 overtopping %s; the failure reaches x = %s m (crest %.3f-'
-              '%.3f m, middle %.3f m); height change over the last 20 s '
-              '%.1f mm (ended: %s)'
+              '%.3f m, middle %.3f m); change over the last 20 s: height '
+              '%.1f mm, [E] %.3f (ended: %s)'
               % ('none (%s)' % r.closest_text if r.t_over < 0
                  else 'at %.1f s' % r.t_over,
                  fmt(r.x_failure, '%.3f'), CREST[0], CREST[1],
                  0.5*(CREST[0] + CREST[1]), 1000*r.ended_change,
-                 'yes' if r.ended else 'no')]
+                 r.ended_energy, 'yes' if r.ended else 'no')]
     else:
         ok, ev = False, ['no C1 run']
     out.append(('P2', 'C1 does not overtop; its failure reaches the '
@@ -394,8 +398,9 @@ def findings(runs):
         r = R['C2']
         ok = r.ended and np.isfinite(r.Hres) and not r.failed and \
             r.t_over >= 0
-        ev = ['C2 residual %.3f m of %.3f m; height change over the last '
-              '20 s %.1f mm' % (r.Hres, r.H0, 1000*r.ended_change)]
+        ev = ['C2 residual %.3f m of %.3f m; change over the last 20 s: '
+              'height %.1f mm, [E] %.3f'
+              % (r.Hres, r.H0, 1000*r.ended_change, r.ended_energy)]
     else:
         ok, ev = False, ['no C2 run']
     out.append(('P8', 'C2 ends in rebalance with a residual dam', ev, ok))
@@ -407,7 +412,7 @@ def findings(runs):
             t0 = r.t_over if r.t_over >= 0 else 0.0
             decay.append((r.at(r.t, r.E, t0) - r.at(r.t, r.E, t0 + 10))/10)
             flat = abs(r.at(r.t, r.E, r.t[-1]) - r.at(r.t, r.E, r.t[-1] - 20))
-            ok &= flat < 0.02
+            ok &= flat < dba.LEVEL_ENERGY
             ev.append('%s [E] decay %.4f /s in the 10 s after %s, change '
                       'over the last 20 s %.3f, final %.3f'
                       % (r.name, decay[-1], 'overtopping' if r.t_over >= 0
@@ -469,17 +474,28 @@ def findings(runs):
         half = tt[0] + 0.5*(tt[-1] - tt[0]) if len(tt) else 0
         first = [q[i] for i in peaks if tt[i] < half]
         second = [q[i] for i in peaks if tt[i] >= half]
-        # fading: the peaks of the second half add up to less than those
-        # of the first
-        fading = bool(first) and sum(second) < sum(first)
-        good = len(peaks) >= 3 and fading
+        if r.failed:
+            # the seed on F4 (Fig. 11): "a significant rise in the dam height
+            # reduction rate ... at the end of the breach, which is due to
+            # the overall failure of the residual dam": the largest peak
+            # comes in the second half
+            shape = bool(second) and max(second) > max(first, default=0.0)
+            kind = 'complete failure: largest peak in the second half'
+        else:
+            # fading: the peaks of the second half add up to less than
+            # those of the first
+            shape = bool(first) and sum(second) < sum(first)
+            kind = 'fading: second half\'s sum below the first\'s'
+        good = len(peaks) >= 3 and shape
         ok &= good
         ev.append('%s %d peaks of -dH/dt above %.4f m/s after overtopping: '
-                  '%d in the first half (sum %.3f m/s), %d in the second '
-                  '(sum %.3f m/s)' % (r.name, len(peaks), thr, len(first),
-                                      sum(first), len(second), sum(second)))
+                  '%d in the first half (sum %.3f, largest %.4f m/s), %d in '
+                  'the second (sum %.3f, largest %.4f m/s); %s: %s'
+                  % (r.name, len(peaks), thr, len(first), sum(first),
+                     max(first, default=0.0), len(second), sum(second),
+                     max(second, default=0.0), kind, 'yes' if shape else 'no'))
     out.append(('P12', 'the height-change rate has several peaks, fading in '
-                'time', ev, ok))
+                'time (a complete failure: rising at its end)', ev, ok))
     return out
 
 
@@ -594,21 +610,23 @@ def main(out, scale, cases):
     path = os.path.join(out, 'phases.%s.dat' % scale)
     with open(path, 'w') as f:
         f.write('# start of each phase [s] (-: not reached); end: rebalance '
-                'or complete failure; ended: the dam height changed by less than '
-                '5 mm over the last 20 s (change_mm)\n# scenario seepage_at_toe '
-                'overtopping toe_erosion backward_erosion head_cut end end_kind '
-                'end_time_s change_mm ended\n')
+                'or complete failure; ended: over the last 20 s the dam height '
+                'changed by less than 5 mm (change_mm) and [E] by less than '
+                '%g (change_E)\n# scenario seepage_at_toe overtopping '
+                'toe_erosion backward_erosion head_cut end end_kind end_time_s '
+                'change_mm change_E ended\n' % dba.LEVEL_ENERGY)
         for n in SCENARIOS:
             if n not in runs:
                 continue
             r = runs[n]
-            f.write('%-8s %s %s %s %s %s %s %s %.0f %.1f %s\n'
+            f.write('%-8s %s %s %s %s %s %s %s %.0f %.1f %.3f %s\n'
                     % (n, fmt(r.t_seep, '%.1f'),
                        fmt(r.t_over if r.t_over >= 0 else None, '%.1f'),
                        fmt(r.t_toe, '%.1f'), fmt(r.t_back, '%.1f'),
                        fmt(r.t_head, '%.1f'), fmt(r.t_end, '%.1f'),
                        'failure' if r.failed else 'rebalance', r.t[-1],
-                       1000*r.ended_change, 'yes' if r.ended else 'no'))
+                       1000*r.ended_change, r.ended_energy,
+                       'yes' if r.ended else 'no'))
     print(open(path).read())
 
     res = findings(runs)
