@@ -15,13 +15,20 @@
 #   - tables, plots and the ParaView files are written,
 #   - the matrix analysis on this one run of eight reports no finding as
 #     holding: its count reads 0 of 12 and names the seven missing runs,
-#   - the rankings of the findings fail on a list with a value missing.
+#   - the rankings of the findings fail on a list with a value missing,
+#   - P12's rate peaks (rate_peaks) on synthetic dH/dt series (spikes of
+#     -dH/dt every 10 s after overtopping at 0 s, 100 s): peaks of 20, 15,
+#     10 mm/s early and 3 mm/s late fade (holds for a rebalanced run, not
+#     for a complete failure); 10, 10 mm/s early and 50, 40 mm/s late rise
+#     at the end (holds for a complete failure, the seed's F4, not for a
+#     rebalanced run).
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy
 # of the analysis that ignores the missing runs and on one that writes plain
 # "holds", the ranking check on one that drops missing values (the old
-# decreasing()); each must fail for the reason it guards.
+# decreasing()), the rate-peak check on one that judges a complete failure
+# by fading too; each must fail for the reason it guards.
 . "$(dirname "$0")/caseFunctions.sh"
 
 copyTutorial landslideDamBreach damBreach
@@ -154,6 +161,38 @@ EOF
     [ -z "$wrong" ] || fail "decreasing() ranks wrongly: $(echo $wrong)"
 }
 
+# rateShapeCheck <dir>: P12's shape of the rate peaks (rate_peaks) on the
+# synthetic series of the header
+rateShapeCheck()
+{
+    local wrong
+    wrong=$(/usr/bin/python3 - "$1" <<'EOF'
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[1])
+import damBreachMatrix as m
+t = np.arange(0.0, 100.25, 0.5)
+def series(spikes):
+    rate = np.zeros_like(t)
+    for at, mm_s in spikes:
+        rate[int(round(at/0.5))] = -mm_s/1000.0     # dH/dt < 0: lowering
+    return rate
+fading = series([(10, 20), (20, 15), (30, 10), (70, 3)])
+rising = series([(10, 10), (20, 10), (80, 50), (90, 40)])
+for name, rate, failed, expected in (('fading', fading, False, True),
+                                     ('fading', fading, True, False),
+                                     ('rising', rising, True, True),
+                                     ('rising', rising, False, False)):
+    thr, first, second, shape, kind = m.rate_peaks(t, rate, 0.0, failed)
+    if len(first) + len(second) != 4 or shape != expected:
+        print('%s (failed %s): %d + %d peaks, %s %s, expected %s'
+              % (name, failed, len(first), len(second), kind, shape,
+                 expected))
+EOF
+) || fail "the rate-peak check could not run: $wrong"
+    [ -z "$wrong" ] || fail "rate_peaks judges wrongly: $(echo $wrong)"
+}
+
 breakAnalysis ignoreMissing 's/^\(    missing = \).*/\1[]/' '    missing = []'
 mustFail matrixChecks "$PWD/ignoreMissing" "the missing runs ignored" \
     "findings count reads"
@@ -165,8 +204,12 @@ dropped='    v = [x for x in values if x is not None and not np.isnan(x)]'
 breakAnalysis dropMissing "s/^    v = list(values)\$/$dropped/" "$dropped"
 mustFail rankingCheck "$PWD/dropMissing" "missing values dropped" \
     "decreasing() ranks wrongly"
+breakAnalysis failureFades 's/^    if failed:$/    if False:/' '    if False:'
+mustFail rateShapeCheck "$PWD/failureFades" "a complete failure judged by fading" \
+    "rate_peaks judges wrongly"
 matrixChecks "$PWD"
 rankingCheck "$PWD"
+rateShapeCheck "$PWD"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"

@@ -285,6 +285,37 @@ def decreasing(values):
     return len(v) >= 2 and all(a > b for a, b in zip(v, v[1:]))
 
 
+def rate_peaks(t, rate, t_over, failed):
+    """P12 on one run: the peaks of the lowering rate -dH/dt (rate: eq. 21's
+    dH/dt per dump) after overtopping, split at the middle of that time:
+    (threshold, first half's peaks, second half's, shape holds, shape's
+    name). A peak: a local maximum above three times the median after
+    overtopping and above 1 mm/s."""
+    lower = -np.nan_to_num(np.asarray(rate, dtype=float))
+    t = np.asarray(t, dtype=float)
+    sel = t >= t_over
+    tt, q = t[sel], lower[sel]
+    thr = max(0.001, 3*np.median(np.abs(q))) if len(q) else 0.001
+    peaks = [i for i in range(1, len(q) - 1)
+             if q[i] > thr and q[i] >= q[i - 1] and q[i] > q[i + 1]]
+    half = tt[0] + 0.5*(tt[-1] - tt[0]) if len(tt) else 0
+    first = [q[i] for i in peaks if tt[i] < half]
+    second = [q[i] for i in peaks if tt[i] >= half]
+    if failed:
+        # the seed on F4 (Fig. 11): "a significant rise in the dam height
+        # reduction rate ... at the end of the breach, which is due to the
+        # overall failure of the residual dam": the largest peak comes in
+        # the second half
+        shape = bool(second) and max(second) > max(first, default=0.0)
+        return thr, first, second, shape, \
+            'complete failure: largest peak in the second half'
+    # fading: the peaks of the second half add up to less than those of
+    # the first
+    shape = bool(first) and sum(second) < sum(first)
+    return thr, first, second, shape, \
+        'fading: second half\'s sum below the first\'s'
+
+
 def findings(runs):
     """The seed's findings P1-P12: (name, claim, evidence, holds)."""
     R = runs
@@ -463,37 +494,17 @@ def findings(runs):
 
     ev, ok = [], bool(over)
     for r in sorted(over, key=lambda r: r.name):
-        lower = -np.nan_to_num(r.rate)
-        sel = r.t >= r.t_over
-        tt, q = r.t[sel], lower[sel]
-        # a peak: a local maximum of the lowering rate above three times
-        # its median after overtopping and above 1 mm/s
-        thr = max(0.001, 3*np.median(np.abs(q))) if len(q) else 0.001
-        peaks = [i for i in range(1, len(q) - 1)
-                 if q[i] > thr and q[i] >= q[i - 1] and q[i] > q[i + 1]]
-        half = tt[0] + 0.5*(tt[-1] - tt[0]) if len(tt) else 0
-        first = [q[i] for i in peaks if tt[i] < half]
-        second = [q[i] for i in peaks if tt[i] >= half]
-        if r.failed:
-            # the seed on F4 (Fig. 11): "a significant rise in the dam height
-            # reduction rate ... at the end of the breach, which is due to
-            # the overall failure of the residual dam": the largest peak
-            # comes in the second half
-            shape = bool(second) and max(second) > max(first, default=0.0)
-            kind = 'complete failure: largest peak in the second half'
-        else:
-            # fading: the peaks of the second half add up to less than
-            # those of the first
-            shape = bool(first) and sum(second) < sum(first)
-            kind = 'fading: second half\'s sum below the first\'s'
-        good = len(peaks) >= 3 and shape
+        thr, first, second, shape, kind = rate_peaks(r.t, r.rate, r.t_over,
+                                                     r.failed)
+        good = len(first) + len(second) >= 3 and shape
         ok &= good
         ev.append('%s %d peaks of -dH/dt above %.4f m/s after overtopping: '
                   '%d in the first half (sum %.3f, largest %.4f m/s), %d in '
                   'the second (sum %.3f, largest %.4f m/s); %s: %s'
-                  % (r.name, len(peaks), thr, len(first), sum(first),
-                     max(first, default=0.0), len(second), sum(second),
-                     max(second, default=0.0), kind, 'yes' if shape else 'no'))
+                  % (r.name, len(first) + len(second), thr, len(first),
+                     sum(first), max(first, default=0.0), len(second),
+                     sum(second), max(second, default=0.0), kind,
+                     'yes' if shape else 'no'))
     out.append(('P12', 'the height-change rate has several peaks, fading in '
                 'time (a complete failure: rising at its end)', ev, ok))
     return out
