@@ -16,6 +16,8 @@ cd "${0%/*}" || exit                                # Run from this directory
 #
 #   dry      C2, the lake filled by the river from a dry bed (the tutorial
 #            starts it half full)
+#   dryCo045 dry at maxCo 0.45: the dry start's own spread of the numerics
+#   Fdry     F2, the lake filled by the river from a dry bed
 #   smooth   C2 on a smooth bed (Table 3's particle-geometry friction 0.54
 #            and rolling friction 0.12; the tutorial's bed is rough)
 #   w02      C2, a slice 0.2 m wide (4 cells across) instead of 0.1 m
@@ -36,7 +38,7 @@ cd "${0%/*}" || exit                                # Run from this directory
 #   Fco045   F2 at maxCo 0.45: F's spread of the numerics
 #   Flift    F2 with Saffman and Magnus lift
 #------------------------------------------------------------------------------
-all="dry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift"
+all="dry dryCo045 Fdry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift"
 variants=${*:-$all}
 
 # the force models of the lift variants (the tutorial's plus both lifts)
@@ -45,6 +47,8 @@ options()
 {
     case "$1" in
         dry)     echo "-scenario C2 -lakeLevel \"\"" ;;
+        dryCo045) echo "-scenario C2 -lakeLevel \"\" -maxCo 0.45" ;;
+        Fdry)    echo "-scenario F2 -lakeLevel \"\"" ;;
         smooth)  echo "-scenario C2 -bed smooth" ;;
         w02)     echo "-scenario C2 -width 0.2" ;;
         divided) echo "-scenario C2 -voidFraction divided" ;;

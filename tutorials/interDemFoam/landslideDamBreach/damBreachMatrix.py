@@ -673,6 +673,8 @@ def main(out, scale, cases):
 VARIANTS = {
     '': 'tutorial (0.1 m slice, 50 mm cells, virtual sphere, no lift)',
     'dry': 'lake filled from a dry bed',
+    'dryCo045': 'lake filled from a dry bed, maxCo 0.45: its spread',
+    'Fdry': 'lake filled from a dry bed',
     'smooth': 'smooth bed (Table 3 grain-wall friction)',
     'w02': 'slice 0.2 m wide',
     'divided': 'divided void fraction',
