@@ -21,11 +21,18 @@
 #   - height steady, [E] 0.050 over 20 s at 80 s: still changing (go on);
 #   - height steady, [E] 0.010 over 20 s at 80 s: the breach has ended;
 #   - 10 mm over 20 s at 100 s, longest run 100 s: stop, NOT ENDED;
-#   - the same at 100 s with -maxTime 200: still changing (go on).
+#   - the same at 100 s with -maxTime 200: still changing (go on);
+#   - every grain gone: the dumps from 78 s on hold no grain (height 0: 250
+#     mm lost over 20 s) and 78/liggghts.restart.emptied is there (the
+#     solver's mark): the breach has ended, naming that file;
+#   - the same on 2 ranks (processor0/98 and processor0/100 marked, dumps
+#     empty from 98 s, end 100 s): ended, naming the earliest, 98 (not the
+#     first in text order, 100).
 # Negative controls: the checks fail on copies of the rule with both
 # tolerances ignored (every run "ended"), with the [E] tolerance ignored
-# (grains leaving do not count) and with the longest run ignored (a run
-# never stops).
+# (grains leaving do not count), with the longest run ignored (a run
+# never stops), with the emptied mark ignored (an empty flume judged by
+# its height) and with the marks sorted as text.
 . "$(dirname "$0")/caseFunctions.sh"
 
 analysis="$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreachAnalysis.py"
@@ -34,7 +41,8 @@ rm -rf "$runDir/breachEnded"
 mkdir -p "$runDir/breachEnded"
 cd "$runDir/breachEnded" || fail "cannot enter $runDir/breachEnded"
 
-# synthCase <name> <end time s> <lowering rate m/s> <period s (0: none)>:
+# synthCase <name> <end time s> <lowering rate m/s> <period s (0: none)>
+#           [<time s from which the dumps are empty>]:
 # the crest grain's top H(t) = 0.25 - rate t above 100 - floor(t/period)
 # resting grains
 synthCase()
@@ -46,6 +54,7 @@ synthCase()
 import sys
 case = sys.argv[1]
 t_end, rate, period = (float(v) for v in sys.argv[2:5])
+t_gone = float(sys.argv[5]) if len(sys.argv) > 5 else 1e9
 r = 0.01
 for k in range(int(round(t_end/0.5)) + 1):
     t = 0.5*k
@@ -54,6 +63,8 @@ for k in range(int(round(t_end/0.5)) + 1):
     n = 100 - (int(t/period + 1e-9) if period > 0 else 0)
     rows = ['1 %g 0.001 3.5 0.05 %.9f 0 0 0' % (r, top - r)]
     rows += ['%d %g 0.01 3.5 0.05 0.1 0 0 0' % (2 + i, r) for i in range(n)]
+    if t >= t_gone - 1e-9:
+        rows = []
     with open('%s/post/particles.%d.txt' % (case, step), 'w') as f:
         f.write('ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\n'
                 'ITEM: BOX BOUNDS ff pp ff\n-0.1 7.1\n0 0.1\n0 0.6\n'
@@ -66,6 +77,14 @@ synthCase slowing80 80 0.00015 0
 synthCase losing80 80 0 4
 synthCase shedding80 80 0 20
 synthCase changing100 100 0.0005 0
+synthCase emptied80 80 0 0 78
+mkdir -p emptied80/78 && touch emptied80/78/liggghts.restart.emptied
+synthCase emptiedRanks100 100 0 0 98
+for t in 98 100
+do
+    mkdir -p emptiedRanks100/processor0/$t
+    touch emptiedRanks100/processor0/$t/liggghts.restart.emptied
+done
 
 # ruleChecks <analysis script>: the six cases of the header
 ruleChecks()
@@ -94,14 +113,29 @@ ruleChecks()
     expect shedding80 100 0 0.0 0.010 'the breach has ended'
     expect changing100 100 0 10.0 0.000 'NOT ENDED'
     expect changing100 200 1 10.0 0.000 'still changing'
+    # gone <case> <the mark it must name>
+    gone()
+    {
+        out=$(/usr/bin/python3 "$py" ended "$1" --window 20 --tolerance 0.005 \
+              --maxTime 200 2>&1)
+        rc=$?
+        echo "  $1: exit $rc: $out"
+        [ "$rc" = 0 ] || fail "$1 (every grain gone): exit $rc, expected 0"
+        echo "$out" | grep -q "every grain has left the flume ($2)" \
+            || fail "$1: no 'every grain has left the flume ($2)' in: $out"
+    }
+    gone emptied80 78/liggghts.restart.emptied
+    gone emptiedRanks100 processor0/98/liggghts.restart.emptied
 }
 
 # negative controls: the rule broken in three ways must fail the checks
-rule='done = change < tolerance and e_change < energy_tolerance'
-sed "s/$rule/done = True/" "$analysis" > noTolerance.py
-sed "s/$rule/done = change < tolerance/" "$analysis" > noEnergy.py
+rule="level = state\['height_change'\] < tolerance and state\['energy_change'\] < energy_tolerance"
+sed "s/$rule/level = True/" "$analysis" > noTolerance.py
+sed "s/$rule/level = state['height_change'] < tolerance/" "$analysis" > noEnergy.py
 sed 's/t_end >= max_time - 1e-6/False/' "$analysis" > noLongestRun.py
-for broken in noTolerance noEnergy noLongestRun
+sed "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/" "$analysis" > noEmptied.py
+sed 's/key=time_of)/)/' "$analysis" > textOrder.py
+for broken in noTolerance noEnergy noLongestRun noEmptied textOrder
 do
     cmp -s "$analysis" $broken.py && fail "negative control $broken: the rule's line was not found"
     msg=$( (ruleChecks $broken.py) 2>&1 ) \
@@ -110,4 +144,4 @@ do
 done
 
 ruleChecks "$analysis"
-pass "the run goes on at 10 mm or [E] 0.050 over 20 s, stops at 3 mm and [E] 0.010 over 20 s, and stops NOT ENDED at the longest run (100 s; not at -maxTime 200)"
+pass "the run goes on at 10 mm or [E] 0.050 over 20 s, stops at 3 mm and [E] 0.010 over 20 s, stops NOT ENDED at the longest run (100 s; not at -maxTime 200), and stops when every grain has gone, naming the earliest mark"

@@ -16,12 +16,13 @@
 #   - the matrix analysis on this one run of eight reports no finding as
 #     holding: its count reads 0 of 12 and names the seven missing runs,
 #   - the rankings of the findings fail on a list with a value missing,
-#   - P12's rate peaks (rate_peaks) on synthetic dH/dt series (spikes of
-#     -dH/dt every 10 s after overtopping at 0 s, 100 s): peaks of 20, 15,
-#     10 mm/s early and 3 mm/s late fade (holds for a rebalanced run, not
-#     for a complete failure); 10, 10 mm/s early and 50, 40 mm/s late rise
-#     at the end (holds for a complete failure, the seed's F4, not for a
-#     rebalanced run).
+#   - P12's rate peaks (rate_peaks) on synthetic dH/dt series (single
+#     spikes of -dH/dt, overtopping at 0 s, 100 s long): 20, 15, 10 mm/s
+#     at 10, 20, 30 s and 3 mm/s at 70 s fade (holds for a rebalanced run,
+#     not for a complete failure); 10, 10 mm/s at 10, 20 s and 50, 40 mm/s
+#     at 80, 90 s rise at the end (holds for a complete failure, the seed's
+#     F4, not for a rebalanced run); in each case exactly the 4 spikes are
+#     found as peaks.
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy

@@ -81,6 +81,8 @@ BIN = 0.05             # m: profile bins (the CFD cell size)
 FLUME_LENGTH = 7.0
 LEVEL_ENERGY = 0.02    # [E] changed by less than this over 20 s: levelled off
                        # (P9; the run-length rule of ended)
+ENDED_WINDOW = 20.0    # s: the run-length rule's window (Allrun, the matrix)
+ENDED_HEIGHT = 0.005   # m: the dam height changed by less than this over it
 
 
 def read_gravity(case):
@@ -351,9 +353,11 @@ def height_at(case, times, span=2.0):
     dumps = dump_files(case, 'particles')
     edges = np.arange(0.0, FLUME_LENGTH + BIN/2, BIN)
     out = []
+    def height(path):
+        p = read_dump(path)
+        return surface_profile(p, edges).max() if p.size else 0.0   # no grain
     for t in times:
-        hs = [surface_profile(read_dump(f), edges).max()
-              for td, f in dumps if t - span - 1e-9 <= td <= t + 1e-9]
+        hs = [height(f) for td, f in dumps if t - span - 1e-9 <= td <= t + 1e-9]
         out.append(np.mean(hs) if hs else np.nan)
     return out
 
@@ -397,37 +401,65 @@ def emptied(case):
     """The first <time>/liggghts.restart.emptied of the case (serial or
     processor0), or None: when every grain has gone the solver writes it
     instead of a DEM state, and nothing is left to erode."""
+    def time_of(path):
+        try:
+            return float(os.path.basename(os.path.dirname(path)))
+        except ValueError:
+            return float('inf')
     found = sorted(glob.glob(os.path.join(case, '[0-9]*',
                                           'liggghts.restart.emptied'))
                    + glob.glob(os.path.join(case, 'processor0', '[0-9]*',
-                                            'liggghts.restart.emptied')))
+                                            'liggghts.restart.emptied')),
+                   key=time_of)
     return found[0] if found else None
 
 
-def ended(case, window, tolerance, max_time, energy_tolerance):
-    """True when the run should stop: over the last window seconds the dam
-    height changed by less than tolerance and [E] by less than
-    energy_tolerance (the breach has ended: the dam neither lowers nor loses
-    grains), or the run has reached max_time (the longest run of its scale;
-    said so)."""
+def breach_state(case, window=ENDED_WINDOW, tolerance=ENDED_HEIGHT,
+                 energy_tolerance=LEVEL_ENERGY):
+    """The run-length rule, one place for Allrun (ended) and the matrix:
+    a dict with 'gone' (emptied's file or None), 'short' (the run is shorter
+    than the window), the heights 'h' and [E]s 'e' (before, end) and the
+    last dump's time 't_end' (nan when not measured), and 'done': every
+    grain has left, or over the last window seconds the dam height changed
+    by less than tolerance and [E] by less than energy_tolerance (the
+    breach has ended: the dam neither lowers nor loses grains)."""
     dumps = dump_files(case, 'particles')
     if not dumps:
         sys.exit('damBreachAnalysis: no dumps in %s/post' % case)
-    gone = emptied(case)
-    if gone:
-        print('%s: every grain has left the flume (%s): the breach has ended'
-              % (case, os.path.relpath(gone, case)))
-        return True
+    nan = float('nan')
+    state = {'gone': emptied(case), 'short': False, 'h': (nan, nan),
+             'e': (nan, nan), 't_end': dumps[-1][0], 'done': False}
     change_of = height_change(case, window)
     if change_of is None:
+        state['short'] = True
+    else:
+        state['h'] = change_of[:2]
+        state['e'] = energy_change(case, window)
+    state['height_change'] = abs(state['h'][1] - state['h'][0])
+    state['energy_change'] = abs(state['e'][1] - state['e'][0])
+    level = state['height_change'] < tolerance and state['energy_change'] < energy_tolerance
+    state['done'] = state['gone'] is not None or (not state['short'] and level)
+    return state
+
+
+def ended(case, window, tolerance, max_time, energy_tolerance):
+    """True when the run should stop: breach_state's rule (every grain
+    has left, or over the last window seconds the dam height changed by
+    less than tolerance and [E] by less than energy_tolerance), or the run
+    has reached max_time (the longest run of its scale; said so)."""
+    state = breach_state(case, window, tolerance, energy_tolerance)
+    if state['gone']:
+        print('%s: every grain has left the flume (%s): the breach has ended'
+              % (case, os.path.relpath(state['gone'], case)))
+        return True
+    if state['short']:
         print('%s: %.1f s run, shorter than the %g s window: not ended'
-              % (case, dumps[-1][0], window))
+              % (case, state['t_end'], window))
         return False
-    h_before, h_end, t_end = change_of
-    e_before, e_end = energy_change(case, window)
-    change = abs(h_end - h_before)
-    e_change = abs(e_end - e_before)
-    done = change < tolerance and e_change < energy_tolerance
+    (h_before, h_end), (e_before, e_end) = state['h'], state['e']
+    t_end = state['t_end']
+    change, e_change = state['height_change'], state['energy_change']
+    done = state['done']
     print('%s: dam height %.4f m at %.1f s, %.4f m at %.1f s: change %.1f mm '
           '%s %.1f mm; [E] %.3f -> %.3f: change %.3f %s %.3f: %s'
           % (case, h_before, t_end - window, h_end, t_end, 1000*change,
@@ -770,8 +802,8 @@ if __name__ == '__main__':
         import argparse
         ap = argparse.ArgumentParser(prog='damBreachAnalysis.py ended')
         ap.add_argument('case')
-        ap.add_argument('--window', type=float, default=20.0)
-        ap.add_argument('--tolerance', type=float, default=0.005)
+        ap.add_argument('--window', type=float, default=ENDED_WINDOW)
+        ap.add_argument('--tolerance', type=float, default=ENDED_HEIGHT)
         ap.add_argument('--energyTolerance', type=float,
                         default=LEVEL_ENERGY)
         ap.add_argument('--maxTime', type=float, default=200.0)

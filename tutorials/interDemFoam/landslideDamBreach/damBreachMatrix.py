@@ -229,15 +229,12 @@ class Run:
         return np.interp(t, series_t, series)
 
     def _phases(self):
-        # ended: as Allrun's run-length check (damBreachAnalysis.py ended)
-        change_of = dba.height_change(self.case, 20)
-        self.ended_change = abs(change_of[1] - change_of[0]) \
-            if change_of else np.nan
-        e_of = dba.energy_change(self.case, 20) if change_of else None
-        self.ended_energy = abs(e_of[1] - e_of[0]) if e_of else np.nan
-        self.ended = dba.emptied(self.case) is not None or \
-            (change_of is not None and self.ended_change < 0.005
-             and self.ended_energy < dba.LEVEL_ENERGY)
+        # ended: Allrun's run-length rule (damBreachAnalysis.breach_state)
+        state = dba.breach_state(self.case)
+        self.ended_change = state['height_change']
+        self.ended_energy = state['energy_change']
+        self.ended = state['done']
+        self.emptied = state['gone'] is not None
         self.failed = self.Hres < FAILED*self.H0
         self.t_toe = self.t_back = self.t_head = self.t_end = None
         toe = (self.centres >= TOE - 0.25) & (self.centres <= TOE)
@@ -621,22 +618,25 @@ def main(out, scale, cases):
     path = os.path.join(out, 'phases.%s.dat' % scale)
     with open(path, 'w') as f:
         f.write('# start of each phase [s] (-: not reached); end: rebalance '
-                'or complete failure; ended: over the last 20 s the dam height '
-                'changed by less than 5 mm (change_mm) and [E] by less than '
-                '%g (change_E)\n# scenario seepage_at_toe overtopping '
+                'or complete failure; ended: over the last %g s the dam height '
+                'changed by less than %g mm (change_mm) and [E] by less than '
+                '%g (change_E), or every grain has left the flume (emptied)'
+                '\n# scenario seepage_at_toe overtopping '
                 'toe_erosion backward_erosion head_cut end end_kind end_time_s '
-                'change_mm change_E ended\n' % dba.LEVEL_ENERGY)
+                'change_mm change_E ended\n'
+                % (dba.ENDED_WINDOW, 1000*dba.ENDED_HEIGHT, dba.LEVEL_ENERGY))
         for n in SCENARIOS:
             if n not in runs:
                 continue
             r = runs[n]
-            f.write('%-8s %s %s %s %s %s %s %s %.0f %.1f %.3f %s\n'
+            f.write('%-8s %s %s %s %s %s %s %s %.1f %.1f %.3f %s\n'
                     % (n, fmt(r.t_seep, '%.1f'),
                        fmt(r.t_over if r.t_over >= 0 else None, '%.1f'),
                        fmt(r.t_toe, '%.1f'), fmt(r.t_back, '%.1f'),
                        fmt(r.t_head, '%.1f'), fmt(r.t_end, '%.1f'),
                        'failure' if r.failed else 'rebalance', r.t[-1],
                        1000*r.ended_change, r.ended_energy,
+                       'emptied' if r.emptied else
                        'yes' if r.ended else 'no'))
     print(open(path).read())
 
