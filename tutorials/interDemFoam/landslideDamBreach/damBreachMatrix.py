@@ -696,6 +696,48 @@ VARIANTS = {
 EARLIER = ' [earlier run: no case on disk]'
 
 
+def label_points(ax, points, fontsize=7):
+    """Name each (text, x, y) point beside it, trying a few offsets and
+    taking the first whose label box (estimated from its length) overlaps
+    neither an earlier label nor a point, so crowded points stay legible."""
+    ax.figure.canvas.draw()                      # the final axis limits
+    to_px = ax.transData.transform
+    scale = ax.figure.dpi/72.0                   # points to pixels
+    marks = [to_px((x, y)) for _, x, y in points]
+    placed = []
+    offsets = [(4, 3), (4, -10), (-4, 3), (-4, -10), (4, 12), (4, -19),
+               (-4, 12), (-4, -19), (4, 21), (4, -28)]
+
+    def box(px, dx, dy, w, h):
+        x0 = px[0] + dx*scale - (w if dx < 0 else 0)
+        y0 = px[1] + dy*scale
+        return x0, y0, x0 + w, y0 + h
+
+    def clear(b):
+        for c in placed:
+            if b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]:
+                return False
+        return not any(b[0] - 3 < m[0] < b[2] + 3 and b[1] - 3 < m[1] < b[3] + 3
+                       for m in marks)
+
+    for (text, x, y), px in sorted(zip(points, marks), key=lambda q: -q[1][1]):
+        w, h = 0.6*fontsize*scale*len(text), fontsize*scale
+        for dx, dy in offsets:
+            b = box(px, dx, dy, w, h)
+            if clear(b):
+                break
+        else:
+            dx, dy = offsets[0]
+            b = box(px, dx, dy, w, h)
+        placed.append(b)
+        ax.annotate(text, (x, y), fontsize=fontsize, xytext=(dx, dy),
+                    textcoords='offset points',
+                    ha='right' if dx < 0 else 'left',
+                    arrowprops=None if (dx, dy) == offsets[0] else
+                    dict(arrowstyle='-', lw=0.5, color='0.5',
+                         shrinkA=0, shrinkB=3))
+
+
 def earlier_rows(path, measured):
     """The rows of an existing chart file whose variant is not among those
     measured now (its case is not on this disk): kept, their description
@@ -744,7 +786,7 @@ def coarseness(out, scale, cases):
             f.write('%-4s %-9s %.4f %.1f %.0f %.0f  %s\n'
                     % (r[0], r[1], r[3], r[4], r[5], r[6], r[2]))
     print(open(path).read())
-    fig, ax = plt.subplots(1, 2, figsize=(13, 5))
+    fig, ax = plt.subplots(1, 2, figsize=(14, 6))
     for r in rows:
         colour = 'tab:blue' if r[0] == 'C2' else 'tab:red'
         marker = '*' if r[1] == 'tutorial' else 'o'
@@ -752,8 +794,10 @@ def coarseness(out, scale, cases):
         face = 'none' if r[2].endswith(EARLIER) else colour
         for k, y in ((0, 1000*r[3]), (1, r[4])):
             ax[k].plot(r[6]/60, y, marker, color=colour, mfc=face, ms=size)
-            ax[k].annotate('%s %s' % (r[0], r[1]), (r[6]/60, y), fontsize=7,
-                           xytext=(4, 3), textcoords='offset points')
+    for k in (0, 1):
+        ax[k].margins(x=0.15, y=0.08)
+        label_points(ax[k], [('%s %s' % (r[0], r[1]), r[6]/60,
+                              1000*r[3] if k == 0 else r[4]) for r in rows])
     ax[0].set(xlabel='CPU time of the run [min]',
               ylabel='residual dam height [mm]',
               title='Residual height against cost (star: the tutorial)')
