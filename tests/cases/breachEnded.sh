@@ -86,7 +86,7 @@ do
     touch emptiedRanks100/processor0/$t/liggghts.restart.emptied
 done
 
-# ruleChecks <analysis script>: the six cases of the header
+# ruleChecks <analysis script>: the eight cases of the header
 ruleChecks()
 {
     local py="$1" out rc change

@@ -21,8 +21,8 @@
 #     at 10, 20, 30 s and 3 mm/s at 70 s fade (holds for a rebalanced run,
 #     not for a complete failure); 10, 10 mm/s at 10, 20 s and 50, 40 mm/s
 #     at 80, 90 s rise at the end (holds for a complete failure, the seed's
-#     F4, not for a rebalanced run); in each case exactly the 4 spikes are
-#     found as peaks.
+#     F4, not for a rebalanced run); in each case exactly 4 peaks are
+#     found (their count, not their times, is checked).
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy

@@ -418,8 +418,8 @@ def breach_state(case, window=ENDED_WINDOW, tolerance=ENDED_HEIGHT,
                  energy_tolerance=LEVEL_ENERGY):
     """The run-length rule, one place for Allrun (ended) and the matrix:
     a dict with 'gone' (emptied's file or None), 'short' (the run is shorter
-    than the window), the heights 'h' and [E]s 'e' (before, end) and the
-    last dump's time 't_end' (nan when not measured), and 'done': every
+    than the window), the heights 'h' and [E]s 'e' (before, end; nan when
+    the run is short), the last dump's time 't_end', and 'done': every
     grain has left, or over the last window seconds the dam height changed
     by less than tolerance and [E] by less than energy_tolerance (the
     breach has ended: the dam neither lowers nor loses grains)."""

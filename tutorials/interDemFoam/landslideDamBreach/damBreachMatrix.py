@@ -697,43 +697,45 @@ EARLIER = ' [earlier run: no case on disk]'
 
 
 def label_points(ax, points, fontsize=7):
-    """Name each (text, x, y) point beside it, trying a few offsets and
-    taking the first whose label box (estimated from its length) overlaps
-    neither an earlier label nor a point, so crowded points stay legible."""
+    """Name each point (text, x, y, marker size in points) beside it,
+    trying a few offsets and taking the first whose label box (estimated
+    from its length) overlaps neither an earlier label nor another point's
+    marker, so crowded points stay legible (a leader line where moved)."""
     ax.figure.canvas.draw()                      # the final axis limits
     to_px = ax.transData.transform
     scale = ax.figure.dpi/72.0                   # points to pixels
-    marks = [to_px((x, y)) for _, x, y in points]
+    centres = [to_px((x, y)) for _, x, y, _ in points]
+    radii = [(ms/2 + 1)*scale for _, _, _, ms in points]
+    # (side, dy in points): right or left of the marker, at five heights
+    offsets = [(1, 3), (1, -10), (-1, 3), (-1, -10), (1, 12), (1, -19),
+               (-1, 12), (-1, -19), (1, 21), (1, -28), (-1, 21), (-1, -28)]
     placed = []
-    offsets = [(4, 3), (4, -10), (-4, 3), (-4, -10), (4, 12), (4, -19),
-               (-4, 12), (-4, -19), (4, 21), (4, -28)]
 
-    def box(px, dx, dy, w, h):
-        x0 = px[0] + dx*scale - (w if dx < 0 else 0)
-        y0 = px[1] + dy*scale
+    def box(i, side, dy, w, h):
+        c = centres[i]
+        x0 = c[0] + radii[i] if side > 0 else c[0] - radii[i] - w
+        y0 = c[1] + dy*scale
         return x0, y0, x0 + w, y0 + h
 
-    def clear(b):
+    def clear(b, own):
         for c in placed:
             if b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]:
                 return False
-        return not any(b[0] - 3 < m[0] < b[2] + 3 and b[1] - 3 < m[1] < b[3] + 3
-                       for m in marks)
+        return not any(b[0] - r < c[0] < b[2] + r and b[1] - r < c[1] < b[3] + r
+                       for k, (c, r) in enumerate(zip(centres, radii))
+                       if k != own)
 
-    for (text, x, y), px in sorted(zip(points, marks), key=lambda q: -q[1][1]):
+    for i in sorted(range(len(points)), key=lambda k: -centres[k][1]):
+        text, x, y, _ = points[i]
         w, h = 0.6*fontsize*scale*len(text), fontsize*scale
-        for dx, dy in offsets:
-            b = box(px, dx, dy, w, h)
-            if clear(b):
-                break
-        else:
-            dx, dy = offsets[0]
-            b = box(px, dx, dy, w, h)
-        placed.append(b)
-        ax.annotate(text, (x, y), fontsize=fontsize, xytext=(dx, dy),
+        side, dy = next((o for o in offsets if clear(box(i, *o, w, h), i)),
+                        offsets[0])
+        placed.append(box(i, side, dy, w, h))
+        ax.annotate(text, (x, y), fontsize=fontsize,
+                    xytext=(side*radii[i]/scale, dy),
                     textcoords='offset points',
-                    ha='right' if dx < 0 else 'left',
-                    arrowprops=None if (dx, dy) == offsets[0] else
+                    ha='left' if side > 0 else 'right',
+                    arrowprops=None if (side, dy) == offsets[0] else
                     dict(arrowstyle='-', lw=0.5, color='0.5',
                          shrinkA=0, shrinkB=3))
 
@@ -796,8 +798,6 @@ def coarseness(out, scale, cases):
             ax[k].plot(r[6]/60, y, marker, color=colour, mfc=face, ms=size)
     for k in (0, 1):
         ax[k].margins(x=0.15, y=0.08)
-        label_points(ax[k], [('%s %s' % (r[0], r[1]), r[6]/60,
-                              1000*r[3] if k == 0 else r[4]) for r in rows])
     ax[0].set(xlabel='CPU time of the run [min]',
               ylabel='residual dam height [mm]',
               title='Residual height against cost (star: the tutorial)')
@@ -806,6 +806,10 @@ def coarseness(out, scale, cases):
               title='Overtopping time against cost (blue C2, red F2; '
                     'open: earlier run)')
     fig.tight_layout()
+    for k in (0, 1):                 # after the layout: the final positions
+        label_points(ax[k], [('%s %s' % (r[0], r[1]), r[6]/60,
+                              1000*r[3] if k == 0 else r[4],
+                              16 if r[1] == 'tutorial' else 7) for r in rows])
     fig.savefig(os.path.join(out, 'coarseness.%s.png' % scale), dpi=110)
     print('Written: %s/coarseness.%s.dat, .png' % (out, scale))
     return 0
