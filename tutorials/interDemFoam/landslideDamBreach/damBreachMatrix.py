@@ -789,6 +789,7 @@ def coarseness(out, scale, cases):
                     % (r[0], r[1], r[3], r[4], r[5], r[6], r[2]))
     print(open(path).read())
     fig, ax = plt.subplots(1, 2, figsize=(14, 6))
+    labels = ([], [])                # (text, x, y, marker size) per panel
     for r in rows:
         colour = 'tab:blue' if r[0] == 'C2' else 'tab:red'
         marker = '*' if r[1] == 'tutorial' else 'o'
@@ -796,6 +797,7 @@ def coarseness(out, scale, cases):
         face = 'none' if r[2].endswith(EARLIER) else colour
         for k, y in ((0, 1000*r[3]), (1, r[4])):
             ax[k].plot(r[6]/60, y, marker, color=colour, mfc=face, ms=size)
+            labels[k].append(('%s %s' % (r[0], r[1]), r[6]/60, y, size))
     for k in (0, 1):
         ax[k].margins(x=0.15, y=0.08)
     ax[0].set(xlabel='CPU time of the run [min]',
@@ -807,9 +809,7 @@ def coarseness(out, scale, cases):
                     'open: earlier run)')
     fig.tight_layout()
     for k in (0, 1):                 # after the layout: the final positions
-        label_points(ax[k], [('%s %s' % (r[0], r[1]), r[6]/60,
-                              1000*r[3] if k == 0 else r[4],
-                              16 if r[1] == 'tutorial' else 7) for r in rows])
+        label_points(ax[k], labels[k])
     fig.savefig(os.path.join(out, 'coarseness.%s.png' % scale), dpi=110)
     print('Written: %s/coarseness.%s.dat, .png' % (out, scale))
     return 0
