@@ -149,6 +149,12 @@ set_tests_properties(case.damGrading PROPERTIES LABELS "case;damBreach" TIMEOUT 
 add_test(case.breachEnded "bash" "cases/breachEnded.sh")
 set_tests_properties(case.breachEnded PROPERTIES LABELS "case;damBreach" TIMEOUT 60)
 
+add_test(case.breachResume "bash" "cases/breachResume.sh")
+set_tests_properties(case.breachResume PROPERTIES LABELS "case;damBreach" TIMEOUT 60)
+
+add_test(case.breachResumeRun "bash" "cases/breachResumeRun.sh")
+set_tests_properties(case.breachResumeRun PROPERTIES LABELS "case;coupled;damBreach" TIMEOUT 900)
+
 # Quiet dense beds: plate pressure of a bed at rest (std <= 1 % of its
 # weight) and fluidized (<= 5 %); the former scheme must fail
 add_test(case.quietBed "bash" "cases/quietBed.sh")
