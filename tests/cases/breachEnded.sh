@@ -22,6 +22,8 @@
 #   - height steady, [E] 0.010 over 20 s at 80 s: the breach has ended;
 #   - 10 mm over 20 s at 100 s, longest run 100 s: stop, NOT ENDED;
 #   - the same at 100 s with -maxTime 200: still changing (go on);
+#   - a 10 s run (shorter than the 20 s window): goes on with -maxTime
+#     200, stops NOT ENDED with -maxTime 10;
 #   - every grain gone: the dumps from 78 s on hold no grain (height 0: 250
 #     mm lost over 20 s) and 78/liggghts.restart.emptied is there (the
 #     solver's mark): the breach has ended, naming that file;
@@ -31,8 +33,9 @@
 # Negative controls: the checks fail on copies of the rule with both
 # tolerances ignored (every run "ended"), with the [E] tolerance ignored
 # (grains leaving do not count), with the longest run ignored (a run
-# never stops), with the emptied mark ignored (an empty flume judged by
-# its height) and with the marks sorted as text.
+# never stops), with it ignored for a run shorter than the window, with
+# the emptied mark ignored (an empty flume judged by its height) and with
+# the marks sorted as text.
 . "$(dirname "$0")/caseFunctions.sh"
 
 analysis="$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreachAnalysis.py"
@@ -77,6 +80,7 @@ synthCase slowing80 80 0.00015 0
 synthCase losing80 80 0 4
 synthCase shedding80 80 0 20
 synthCase changing100 100 0.0005 0
+synthCase short10 10 0.0005 0
 synthCase emptied80 80 0 0 78
 mkdir -p emptied80/78 && touch emptied80/78/liggghts.restart.emptied
 synthCase emptiedRanks100 100 0 0 98
@@ -126,16 +130,30 @@ ruleChecks()
     }
     gone emptied80 78/liggghts.restart.emptied
     gone emptiedRanks100 processor0/98/liggghts.restart.emptied
+    # short <maxTime> <exit status> <text>: a 10 s run, shorter than the
+    # window
+    short()
+    {
+        out=$(/usr/bin/python3 "$py" ended short10 --window 20 --tolerance 0.005 \
+              --maxTime "$1" 2>&1)
+        rc=$?
+        echo "  short10, longest run $1 s: exit $rc: $out"
+        [ "$rc" = "$2" ] || fail "short10 (longest run $1 s): exit $rc, expected $2"
+        echo "$out" | grep -q "$3" || fail "short10 (longest run $1 s): no '$3' in: $out"
+    }
+    short 200 1 'shorter than the 20 s window: not ended'
+    short 10 0 'NOT ENDED'
 }
 
-# negative controls: the rule broken in three ways must fail the checks
+# negative controls: the rule broken in six ways must fail the checks
 rule="level = state\['height_change'\] < tolerance and state\['energy_change'\] < energy_tolerance"
 sed "s/$rule/level = True/" "$analysis" > noTolerance.py
 sed "s/$rule/level = state['height_change'] < tolerance/" "$analysis" > noEnergy.py
-sed 's/t_end >= max_time - 1e-6/False/' "$analysis" > noLongestRun.py
+sed "s/state\['t_end'\] >= max_time - 1e-6/False/; s/t_end >= max_time - 1e-6/False/" "$analysis" > noLongestRun.py
+sed "s/state\['t_end'\] >= max_time - 1e-6/False/" "$analysis" > shortNoLongestRun.py
 sed "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/" "$analysis" > noEmptied.py
 sed 's/key=time_of)/)/' "$analysis" > textOrder.py
-for broken in noTolerance noEnergy noLongestRun noEmptied textOrder
+for broken in noTolerance noEnergy noLongestRun shortNoLongestRun noEmptied textOrder
 do
     cmp -s "$analysis" $broken.py && fail "negative control $broken: the rule's line was not found"
     msg=$( (ruleChecks $broken.py) 2>&1 ) \

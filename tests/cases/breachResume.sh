@@ -20,11 +20,18 @@
 #     every time folder but 0, every postProcessing/*/0, log.liggghts and
 #     every dump past step 0 gone;
 #   - finished (wallTime there): "finished", nothing removed;
-#   - on 2 ranks, stopped in the piece to 100 s: processor0/1's time
-#     folders 82-96 gone, 80 kept; with processor1/80/liggghts.restart
-#     missing: exit 1 naming processor1 and liggghts.restart;
+#   - on 2 ranks (the DEM state in processor0's folders only, as the
+#     solver writes it), stopped in the piece to 100 s: both processors'
+#     time folders 82-96 gone, 80 kept; with processor0/80/liggghts.restart
+#     missing: exit 1 naming processor0 and liggghts.restart, and nothing
+#     removed or moved (96 and the stopped log still there);
+#   - the last piece ended with every grain gone (80/liggghts.restart.
+#     emptied, the solver's mark, instead of the state): "from 80 .to80";
+#   - a longest run of 250 s: Allrun's last piece ends at 260 s, so a run
+#     stopped in it goes on "from 240 .to240", its log.interDemFoam.to260
+#     moved to interrupted/ and 256 gone;
 #   - a fixed end (untilEnded no, firstEnd 8) whose one piece completed:
-#     "from 8 -", no later piece looked for;
+#     "from 8 -";
 #   - Allrun.run without demDt: exit 1 naming Allrun.run and demDt; no
 #     Allrun.run and no wallTime: exit 1 naming Allrun.run.
 # Negative controls: the checks fail on copies of the module that keep the
@@ -45,7 +52,7 @@ synthCase()
     local c=$1 first=$2 until=$3 np=$4 last=$5 done=$6 stopped=$7
     rm -rf "$c"
     mkdir -p "$c/post" "$c/postProcessing/lakeLevel"
-    printf 'firstEnd %s\nuntilEnded %s\nmaxEnd 200\nnProcs %s\ndemDt 1e-4\n' \
+    printf 'firstEnd %s\npieceLength 20\nuntilEnded %s\nmaxEnd 200\nnProcs %s\ndemDt 1e-4\n' \
         "$first" "$until" "$np" > "$c/Allrun.run"
     local s
     for s in $done
@@ -61,7 +68,8 @@ synthCase()
         for t in $(seq 0 2 "$last")
         do
             mkdir -p "$r/$t"
-            [ "$t" = 0 ] || touch "$r/$t/liggghts.restart"
+            # the DEM state: in processor0's folder when decomposed
+            [ "$t" = 0 ] || [ "$r" = "$c/processor1" ] || touch "$r/$t/liggghts.restart"
         done
     done
     for t in 0 60 80
@@ -140,15 +148,33 @@ resumeChecks()
     for r in processor0 processor1
     do
         for t in $(seq 82 2 96); do gone ranks2/$r/$t ranks2; done
-        there ranks2/$r/80/liggghts.restart ranks2
+        there ranks2/$r/80 ranks2
     done
+    there ranks2/processor0/80/liggghts.restart ranks2
     synthCase ranks2bad 60 yes 2 96 "- .to80" .to100
-    rm ranks2bad/processor1/80/liggghts.restart
+    rm ranks2bad/processor0/80/liggghts.restart
     msg=$(/usr/bin/python3 "$py" ranks2bad 2>&1) \
-        && fail "ranks2bad (processor1/80/liggghts.restart missing): exit 0, expected 1"
+        && fail "ranks2bad (processor0/80/liggghts.restart missing): exit 0, expected 1"
     echo "  ranks2bad: $msg"
-    echo "$msg" | grep -q "processor1" && echo "$msg" | grep -q "liggghts.restart" \
-        || fail "ranks2bad: the message does not name processor1 and liggghts.restart: $msg"
+    echo "$msg" | grep -q "processor0" && echo "$msg" | grep -q "liggghts.restart" \
+        || fail "ranks2bad: the message does not name processor0 and liggghts.restart: $msg"
+    there ranks2bad/processor0/96 "ranks2bad (nothing may be removed)"
+    there ranks2bad/log.interDemFoam.to100 "ranks2bad (nothing may be moved)"
+
+    synthCase emptied 60 yes 1 96 "- .to80" .to100
+    mv emptied/80/liggghts.restart emptied/80/liggghts.restart.emptied
+    out=$(/usr/bin/python3 "$py" emptied 2>/dev/null)
+    echo "  emptied: $out"
+    [ "$out" = "from 80 .to80" ] || fail "emptied (80/liggghts.restart.emptied) printed '$out', expected 'from 80 .to80'"
+
+    synthCase longest250 60 yes 1 256 "- .to80 .to100 .to120 .to140 .to160 .to180 .to200 .to220 .to240" .to260
+    sed -i 's/^maxEnd 200$/maxEnd 250/' longest250/Allrun.run
+    out=$(/usr/bin/python3 "$py" longest250 2>/dev/null)
+    echo "  longest250: $out"
+    [ "$out" = "from 240 .to240" ] || fail "longest250 printed '$out', expected 'from 240 .to240'"
+    there longest250/interrupted/log.interDemFoam.to260 longest250
+    gone longest250/log.interDemFoam.to260 longest250
+    gone longest250/256 longest250
 
     synthCase fixedEnd 8 no 1 8 "-" ""
     out=$(/usr/bin/python3 "$py" fixedEnd 2>/dev/null)
@@ -156,13 +182,13 @@ resumeChecks()
     [ "$out" = "from 8 -" ] || fail "fixedEnd printed '$out', expected 'from 8 -'"
     there fixedEnd/8/liggghts.restart fixedEnd
 
-    synthCase noDt 60 yes 1 70 "-" .to80
+    synthCase noDt 60 yes 1 80 "-" .to80
     sed -i '/demDt/d' noDt/Allrun.run
     msg=$(/usr/bin/python3 "$py" noDt 2>&1) && fail "noDt: exit 0, expected 1"
     echo "  noDt: $msg"
     echo "$msg" | grep -q "Allrun.run" && echo "$msg" | grep -q "demDt" \
         || fail "noDt: the message does not name Allrun.run and demDt: $msg"
-    there noDt/70 "noDt (nothing may be removed)"
+    there noDt/80 "noDt (nothing may be removed)"
     synthCase noSettings 60 yes 1 70 "-" .to80
     rm noSettings/Allrun.run
     msg=$(/usr/bin/python3 "$py" noSettings 2>&1) && fail "noSettings: exit 0, expected 1"
@@ -176,7 +202,7 @@ resumeChecks()
 sed 's/if m and int(m.group(1)) > step0:/if False:/' "$module" > keepDumps.py
 sed 's/    return "from", done\[1\], done\[0\], settings/    return "from", max(time_folders(case)), done[0], settings/' \
     "$module" > latestWrite.py
-sed 's/return any(line.startswith("End") for line in f)/return True/' "$module" > noEnd.py
+sed 's/return any(line.strip() == "End" for line in f)/return True/' "$module" > noEnd.py
 for broken in keepDumps latestWrite noEnd
 do
     cmp -s "$module" $broken.py && fail "negative control $broken: the line to break was not found"

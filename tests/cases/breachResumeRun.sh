@@ -2,48 +2,66 @@
 # interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
 # Copyright (C) 2026 the interDemFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
-# `Allrun -resume` on a real dam-breach run (tutorials/interDemFoam/
+# `Allrun -resume` on real dam-breach runs (tutorials/interDemFoam/
 # landslideDamBreach; case.damBreach's small run: C4, lake 3 cm below the
-# crest, a fixed end of 8 s, writes every 2 s). A run killed (SIGKILL to
-# Allrun, the solver and LIGGGHTS) once the solver has passed 5 s, with the
-# writes of 2 and 4 s on disk, and then resumed must give a
-# damBreach.summary identical, line by line, to the same run made without
-# a stop (the stopped piece is run again from its start, the state an
-# uninterrupted run has there); the resumed case keeps the stopped log in
-# interrupted/. Resuming the finished case again analyses it without
-# rerunning (no new solver log) and leaves the summary unchanged.
+# crest), shortened in this copy of the tutorial so that a run is a chain
+# of pieces within seconds: the first piece to 2 s instead of 60, then
+# pieces of 2 s instead of 20, writes every 1 s, the longest run 6 s (the
+# run-length rule, with its 20 s window, goes on to 6 s and stops there,
+# NOT ENDED). The dam is poured first. Checks:
+#   - the run without a stop has three pieces (log.interDemFoam, .to4, .to6);
+#   - a run killed (SIGKILL to its process group) in its first piece, past
+#     1.5 s (write of 1 s on disk), then resumed: "start", and a
+#     damBreach.summary identical (diff) to the run without a stop;
+#   - a run killed in its second piece, past 3.5 s (writes of 1, 2, 3 s),
+#     then resumed: "from 2 -" (the first piece's end), the stopped log in
+#     interrupted/log.interDemFoam.to4, the pieces .to4 and .to6 run again,
+#     and the summary identical to the run without a stop;
+#   - resuming that finished case again prints "finished", runs no solver
+#     and leaves its solver log (md5) and summary unchanged.
 # Negative control: with the resume module changed to go on from the
-# latest write (4 s) instead of the last complete piece, the resumed run's
-# summary differs (it ends at 4 s), and the check must fail.
-# (The pieces of a run "until the breach has ended" are checked on
+# latest write (3 s) instead of the last complete piece's end, a run
+# killed the same way and resumed must give a different summary.
+# (Stopped pieces, cleaning, 2 ranks and bad settings are checked on
 # synthetic case folders by case.breachResume.)
 . "$(dirname "$0")/caseFunctions.sh"
 
 copyTutorial landslideDamBreach breachResumeRun
 rm -f DEM/dam.*.restart                        # pour the dam too
-options="-scenario C4 -lakeLevel 0.27 -endTime 8"
+# pieces of seconds: first piece 2 s, then 2 s each, writes every 1 s
+sed -i 's/defaultLake=0.15; defaultEnd=60; maxEnd=200 ;;/defaultLake=0.15; defaultEnd=2; maxEnd=200 ;;/; s/^pieceLength=20 /pieceLength=2 /' Allrun
+grep -q "defaultEnd=2; maxEnd=200" Allrun && grep -q "^pieceLength=2 " Allrun \
+    || fail "could not shorten the pieces in Allrun (the lines to change were not found)"
+foamDictionary -entry writeInterval -set 1 system/controlDict > /dev/null \
+    || fail "could not set writeInterval in system/controlDict"
+options="-scenario C4 -lakeLevel 0.27 -maxTime 6"
 
-./Allrun $options > log.Allrun.whole 2>&1 \
+./Allrun $options -tag whole > log.Allrun.whole 2>&1 \
     || { tail -20 log.Allrun.whole; fail "Allrun failed (log.Allrun.whole)"; }
-whole=C4.small/damBreach.summary
+whole=C4.small.whole/damBreach.summary
 [ -s "$whole" ] || fail "$whole not written"
-grep -q "^end time \[s\] *8$" "$whole" || fail "$whole: the run did not end at 8 s"
+for log in log.interDemFoam log.interDemFoam.to4 log.interDemFoam.to6
+do
+    grep -q "^End" C4.small.whole/$log || fail "the run without a stop has no complete $log"
+done
+grep -q "^end time \[s\] *6$" "$whole" || fail "$whole: the run did not end at 6 s"
 
-# runStopped <tag>: the run in case C4.small.<tag>, killed once the
-# solver's log has passed 5 s
+# runStopped <tag> <time s>: the run in case C4.small.<tag>, killed once
+# its solver has passed <time>
 runStopped()
 {
-    local log=C4.small.$1/log.interDemFoam t=0 k
+    local case=C4.small.$1 t="" k log
     # a process group of its own (job control), so that one kill stops
     # Allrun, the solver and LIGGGHTS together
     set -m
     ./Allrun $options -tag "$1" > log.Allrun.$1 2>&1 &
     local pid=$!
     set +m
-    for k in $(seq 1 1200)
+    for k in $(seq 1 2400)
     do
-        t=$(grep "^Time = " "$log" 2>/dev/null | tail -1 | awk '{print $3}')
-        [ -n "$t" ] && awk -v t="$t" 'BEGIN { exit !(t > 5) }' && break
+        log=$(ls -t $case/log.interDemFoam* 2> /dev/null | head -1)
+        t=$(grep "^Time = " "$log" 2> /dev/null | tail -1 | awk '{print $3}')
+        [ -n "$t" ] && awk -v t="$t" -v s="$2" 'BEGIN { exit !(t > s) }' && break
         kill -0 "$pid" 2> /dev/null || fail "the run $1 ended before it could be stopped (log.Allrun.$1)"
         sleep 0.25
     done
@@ -55,57 +73,69 @@ runStopped()
         sleep 0.25
     done
     pgrep -g "$pid" > /dev/null && fail "the run $1 is still running 10 s after the kill"
-    echo "  $1 stopped at t = $t s (writes: $(cd C4.small.$1 && ls -d [0-9]* | grep -v orig | sort -n | tr '\n' ' '))"
-    [ -d C4.small.$1/4 ] || fail "$1: stopped before its write of 4 s"
-    grep -q "^End" "$log" && fail "$1: the run had ended before it was stopped"
+    echo "  $1 stopped at t = $t s in $(basename "$log") (writes: $(cd $case && ls -d [0-9]* | grep -v orig | sort -n | tr '\n' ' '))"
+    grep -q "^End" "$log" && fail "$1: $log had ended before the run was stopped"
     return 0
 }
 
-# resumeCheck <tag>: resume the stopped case; its summary must equal the
-# uninterrupted run's
+# resumeCheck <tag> <state Allrun must report>: resume the stopped case;
+# its summary must equal the run's without a stop
 resumeCheck()
 {
     ./Allrun $options -tag "$1" -resume > log.Allrun.$1.resume 2>&1 \
         || { tail -20 log.Allrun.$1.resume; fail "Allrun -resume failed (log.Allrun.$1.resume)"; }
     grep "^Allrun: -resume" log.Allrun.$1.resume
+    grep -q "^Allrun: -resume C4.small.$1: $2\$" log.Allrun.$1.resume \
+        || fail "$1: Allrun -resume did not go on '$2' (log.Allrun.$1.resume)"
     local s=C4.small.$1/damBreach.summary
     [ -s "$s" ] || fail "$1: $s not written"
     diff "$whole" "$s" > diff.$1 \
-        || { cat diff.$1; fail "$1: the resumed run's summary differs from the uninterrupted run's"; }
+        || { cat diff.$1; fail "$1: the resumed run's summary differs from the run's without a stop"; }
     return 0
 }
 
-# negative control: resuming from the latest write
-runStopped latestWrite
-sed -i 's/        return "start", 0.0, None, settings/        return "from", max(time_folders(case)), "", settings/' damBreachResume.py
-grep -q 'return "from", max(time_folders(case))' damBreachResume.py \
-    || fail "negative control latestWrite: the line to break was not found"
-msg=$( (resumeCheck latestWrite) 2>&1 ) \
-    && fail "the resumed summary equals the uninterrupted one with the module broken (latestWrite)"
+# negative control: going on from the latest write (3 s)
+runStopped latestWrite 3.5
+[ -d C4.small.latestWrite/3 ] || fail "latestWrite: stopped before its write of 3 s"
+cp damBreachResume.py damBreachResume.py.orig
+sed -i 's/    return "from", done\[1\], done\[0\], settings/    return "from", max(time_folders(case)), done[0], settings/' damBreachResume.py
+cmp -s damBreachResume.py damBreachResume.py.orig \
+    && fail "negative control latestWrite: the line to break was not found"
+msg=$( (resumeCheck latestWrite "from 3 -") 2>&1 ) \
+    && fail "the resumed summary equals the run's without a stop with the module broken (latestWrite)"
 echo "negative control latestWrite: ${msg##*FAIL: }"
 case "$msg" in
     *"summary differs"*) ;;
     *) fail "negative control latestWrite fails, but not for the summary: $msg" ;;
 esac
-cp "$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreachResume.py" .
+mv damBreachResume.py.orig damBreachResume.py
 
-runStopped resumed
-resumeCheck resumed
-[ -f C4.small.resumed/interrupted/log.interDemFoam ] \
-    || fail "the stopped log is not in C4.small.resumed/interrupted/"
-echo "  resumed: summary identical to the uninterrupted run's"
+runStopped first 1.5
+resumeCheck first start
+echo "  first: resumed from the start, summary identical to the run's without a stop"
+
+runStopped later 3.5
+[ -d C4.small.later/3 ] || fail "later: stopped before its write of 3 s"
+resumeCheck later "from 2 -"
+[ -f C4.small.later/interrupted/log.interDemFoam.to4 ] \
+    || fail "the stopped log is not in C4.small.later/interrupted/"
+for log in log.interDemFoam.to4 log.interDemFoam.to6
+do
+    grep -q "^End" C4.small.later/$log || fail "later: no complete $log after the resume"
+done
+echo "  later: resumed from 2 s, summary identical to the run's without a stop"
 
 # resuming the finished case: analysed, not rerun
-before=$(md5sum < C4.small.resumed/log.interDemFoam)
-./Allrun $options -tag resumed -resume > log.Allrun.again 2>&1 \
+before=$(cat C4.small.later/log.interDemFoam* | md5sum)
+./Allrun $options -tag later -resume > log.Allrun.again 2>&1 \
     || { tail -20 log.Allrun.again; fail "Allrun -resume of the finished case failed"; }
-grep -q "^Allrun: -resume C4.small.resumed: finished" log.Allrun.again \
+grep -q "^Allrun: -resume C4.small.later: finished$" log.Allrun.again \
     || fail "the finished case was not recognised as finished (log.Allrun.again)"
 grep -q "^Running interDemFoam" log.Allrun.again \
     && fail "the finished case was run again"
-[ "$(md5sum < C4.small.resumed/log.interDemFoam)" = "$before" ] \
-    || fail "the finished case's solver log changed"
-diff "$whole" C4.small.resumed/damBreach.summary > /dev/null \
+[ "$(cat C4.small.later/log.interDemFoam* | md5sum)" = "$before" ] \
+    || fail "the finished case's solver logs changed"
+diff "$whole" C4.small.later/damBreach.summary > /dev/null \
     || fail "the finished case's summary changed when resumed again"
 
-pass "a run killed past 5 s (writes of 2 and 4 s on disk) and resumed gives the same damBreach.summary as the uninterrupted run, its stopped log kept in interrupted/; resuming it again only analyses it; resuming from the latest write instead gives another summary"
+pass "runs of three 2 s pieces killed in the first piece (past 1.5 s) and in the second (past 3.5 s) and resumed (from the start; from 2 s, the stopped log in interrupted/) give the same damBreach.summary as the run without a stop; resuming the finished case only analyses it; going on from the latest write instead gives another summary"

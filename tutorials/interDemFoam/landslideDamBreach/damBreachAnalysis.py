@@ -455,6 +455,11 @@ def ended(case, window, tolerance, max_time, energy_tolerance):
     if state['short']:
         print('%s: %.1f s run, shorter than the %g s window: not ended'
               % (case, state['t_end'], window))
+        if state['t_end'] >= max_time - 1e-6:
+            print('%s: NOT ENDED: the run has reached %g s, the longest run '
+                  '(Allrun -maxTime); stopped and analysed as it is'
+                  % (case, max_time))
+            return True
         return False
     (h_before, h_end), (e_before, e_end) = state['h'], state['e']
     t_end = state['t_end']

@@ -5,9 +5,9 @@
 """Where an interrupted landslide-dam run goes on (Allrun -resume).
 
 A run is a chain of pieces: the first to `firstEnd` (60 s at small scale),
-then 20 s pieces, each a restart from the write at the previous piece's
+then pieces of `pieceLength` (20 s), each a restart from the write at the previous piece's
 end (log.interDemFoam, log.interDemFoam.to80, .to100, ...). A piece is
-complete when its log ends with OpenFOAM's `End`. A run that was stopped
+complete when its log has OpenFOAM's closing line `End`. A run that was stopped
 (killed, machine switched off) goes on from the end of its last complete
 piece, the same state an uninterrupted run restarts its next piece from,
 so the resumed run gives the same results as one that was never stopped.
@@ -26,9 +26,9 @@ prints one line:
                                applies the run-length rule there
     start                      no piece is complete: run from the start
 and exits 1 with a message naming the file when the case cannot be
-resumed. CASE/Allrun.run, written by Allrun before the first piece, holds
-the run's settings (keyword value per line): firstEnd, untilEnded,
-maxEnd, nProcs, demDt.
+resumed. CASE/Allrun.run, written by Allrun when it sets the case up,
+holds the run's settings (keyword value per line): firstEnd, pieceLength,
+untilEnded, maxEnd, nProcs, demDt.
 """
 
 import os
@@ -37,7 +37,6 @@ import shutil
 import sys
 
 SETTINGS = "Allrun.run"
-PIECE = 20.0          # s, Allrun's later pieces
 TIME_NAME = re.compile(r"^[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)?$")
 DUMP_NAME = re.compile(r"^.*?[._]([0-9]+)\.(txt|vtk)$")
 
@@ -51,8 +50,8 @@ def read_settings(case):
     if not os.path.isfile(path):
         raise ResumeError("%s: missing, and the run has not finished (no "
                           "wallTime): the case was set up by an Allrun "
-                          "without -resume, or its setup was stopped; run "
-                          "it anew without -resume (which replaces the "
+                          "older than -resume, or its setup was stopped; "
+                          "run it anew without -resume (which replaces the "
                           "case)" % path)
     settings = {}
     with open(path) as f:
@@ -60,8 +59,8 @@ def read_settings(case):
             words = line.split()
             if len(words) >= 2 and not words[0].startswith("#"):
                 settings[words[0]] = " ".join(words[1:])
-    need = {"firstEnd": float, "untilEnded": str, "maxEnd": float,
-            "nProcs": int, "demDt": float}
+    need = {"firstEnd": float, "pieceLength": float, "untilEnded": str,
+            "maxEnd": float, "nProcs": int, "demDt": float}
     out = {}
     for key, kind in need.items():
         if key not in settings:
@@ -75,9 +74,10 @@ def read_settings(case):
     if out["untilEnded"] not in ("yes", "no"):
         raise ResumeError("%s: keyword 'untilEnded' is '%s': use yes or no"
                           % (path, out["untilEnded"]))
-    if out["firstEnd"] <= 0 or out["demDt"] <= 0 or out["nProcs"] < 1:
-        raise ResumeError("%s: firstEnd and demDt must be positive and "
-                          "nProcs at least 1" % path)
+    if min(out["firstEnd"], out["pieceLength"], out["demDt"]) <= 0 \
+            or out["nProcs"] < 1:
+        raise ResumeError("%s: firstEnd, pieceLength and demDt must be "
+                          "positive and nProcs at least 1" % path)
     return out
 
 
@@ -87,13 +87,15 @@ def time_name(t):
 
 
 def pieces(settings):
-    """(log suffix, end time) of every piece the run may have, in order."""
+    """(log suffix, end time) of every piece the run may have, in order:
+    Allrun goes on while a piece has ended before the longest run (maxEnd),
+    so the last may end past it (maxEnd 250: ..., 240, 260)."""
     first = settings["firstEnd"]
     out = [("", first)]
     if settings["untilEnded"] == "yes":
         t = first
-        while t + PIECE <= settings["maxEnd"] + 1e-9:
-            t += PIECE
+        while t < settings["maxEnd"] - 1e-6:
+            t += settings["pieceLength"]
             out.append((".to" + time_name(t), t))
     return out
 
@@ -102,7 +104,12 @@ def log_complete(path):
     if not os.path.isfile(path):
         return False
     with open(path, errors="replace") as f:
-        return any(line.startswith("End") for line in f)
+        return any(line.strip() == "End" for line in f)
+
+
+def same_time(a, b):
+    """Time folder names carry 6 significant digits (timePrecision)."""
+    return abs(a - b) <= 1e-6*max(1.0, abs(b))
 
 
 def time_folders(folder):
@@ -143,40 +150,41 @@ def clean(case, t0, settings, dry_run):
             else:
                 os.remove(path)
 
-    eps = 1e-9*max(1.0, t0)
     roots = [case] + sorted(
         os.path.join(case, d) for d in os.listdir(case)
         if re.match(r"^processor[0-9]+$", d))
+    if t0 > 0:
+        # the DEM state the run goes on from must be there (before anything
+        # is removed): in the case's time folder, or processor0's when
+        # decomposed; a flume emptied of grains leaves the solver's mark
+        root = (os.path.join(case, "processor0") if settings["nProcs"] > 1
+                else case)
+        match = [n for t, n in time_folders(root).items() if same_time(t, t0)]
+        if not (match and any(
+                os.path.isfile(os.path.join(root, match[0], f))
+                for f in ("liggghts.restart", "liggghts.restart.emptied"))):
+            raise ResumeError(
+                "%s: no time %s with liggghts.restart (or .emptied), where "
+                "the last complete piece ended: the case cannot be resumed; "
+                "run it anew without -resume" % (root, time_name(t0)))
     for root in roots:
         for t, name in sorted(time_folders(root).items()):
-            if t > t0 + eps:
+            if t > t0 and not same_time(t, t0):
                 remove(os.path.join(root, name))
-    if settings["nProcs"] > 1 or t0 > 0:
-        # the state the run goes on from must be there
-        where = roots[1:] if settings["nProcs"] > 1 else [case]
-        for root in where:
-            names = time_folders(root)
-            match = [n for t, n in names.items() if abs(t - t0) <= eps]
-            if t0 > 0 and not (match and os.path.isfile(
-                    os.path.join(root, match[0], "liggghts.restart"))):
-                raise ResumeError(
-                    "%s: no time %s with liggghts.restart, where the last "
-                    "complete piece ended: the case cannot be resumed; "
-                    "run it anew without -resume"
-                    % (root, time_name(t0)))
     # function objects' output of the pieces starting at t0 or later
     post = os.path.join(case, "postProcessing")
     if os.path.isdir(post):
         for fo in sorted(os.listdir(post)):
             for t, name in sorted(time_folders(os.path.join(post, fo)).items()):
-                if t >= t0 - eps:
+                if t > t0 or same_time(t, t0):
                     remove(os.path.join(post, fo, name))
     # LIGGGHTS logs of the pieces starting at t0 or later
     for name in sorted(os.listdir(case)):
         if name == "log.liggghts" and t0 == 0:
             remove(os.path.join(case, name))
         m = re.match(r"^log\.liggghts\.(.+)$", name)
-        if m and TIME_NAME.match(m.group(1)) and float(m.group(1)) >= t0 - eps:
+        if m and TIME_NAME.match(m.group(1)) and (
+                float(m.group(1)) > t0 or same_time(float(m.group(1)), t0)):
             remove(os.path.join(case, name))
     # dumps past t0's step
     step0 = int(round(t0/settings["demDt"]))
@@ -193,7 +201,7 @@ def keep_interrupted_logs(case, t0, settings, dry_run):
     """Move the solver logs of pieces after t0 into CASE/interrupted/."""
     moved = []
     for suffix, end in pieces(settings):
-        if end <= t0 + 1e-9:
+        if end < t0 or same_time(end, t0):
             continue
         log = os.path.join(case, "log.interDemFoam" + suffix)
         if os.path.isfile(log):
