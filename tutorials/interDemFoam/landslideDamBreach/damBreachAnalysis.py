@@ -452,27 +452,23 @@ def ended(case, window, tolerance, max_time, energy_tolerance):
         print('%s: every grain has left the flume (%s): the breach has ended'
               % (case, os.path.relpath(state['gone'], case)))
         return True
+    done = state['done']
     if state['short']:
         print('%s: %.1f s run, shorter than the %g s window: not ended'
               % (case, state['t_end'], window))
-        if state['t_end'] >= max_time - 1e-6:
-            print('%s: NOT ENDED: the run has reached %g s, the longest run '
-                  '(Allrun -maxTime); stopped and analysed as it is'
-                  % (case, max_time))
-            return True
-        return False
-    (h_before, h_end), (e_before, e_end) = state['h'], state['e']
-    t_end = state['t_end']
-    change, e_change = state['height_change'], state['energy_change']
-    done = state['done']
-    print('%s: dam height %.4f m at %.1f s, %.4f m at %.1f s: change %.1f mm '
-          '%s %.1f mm; [E] %.3f -> %.3f: change %.3f %s %.3f: %s'
-          % (case, h_before, t_end - window, h_end, t_end, 1000*change,
-             '<' if change < tolerance else '>=', 1000*tolerance,
-             e_before, e_end, e_change,
-             '<' if e_change < energy_tolerance else '>=', energy_tolerance,
-             'the breach has ended' if done else 'still changing'))
-    if not done and t_end >= max_time - 1e-6:
+    else:
+        (h_before, h_end), (e_before, e_end) = state['h'], state['e']
+        change, e_change = state['height_change'], state['energy_change']
+        print('%s: dam height %.4f m at %.1f s, %.4f m at %.1f s: change '
+              '%.1f mm %s %.1f mm; [E] %.3f -> %.3f: change %.3f %s %.3f: %s'
+              % (case, h_before, state['t_end'] - window, h_end,
+                 state['t_end'], 1000*change,
+                 '<' if change < tolerance else '>=', 1000*tolerance,
+                 e_before, e_end, e_change,
+                 '<' if e_change < energy_tolerance else '>=',
+                 energy_tolerance,
+                 'the breach has ended' if done else 'still changing'))
+    if not done and state['t_end'] >= max_time - 1e-6:
         print('%s: NOT ENDED: the run has reached %g s, the longest run of '
               'its scale (Allrun -maxTime); stopped and analysed as it is'
               % (case, max_time))
