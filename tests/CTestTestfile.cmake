@@ -143,6 +143,9 @@ set_tests_properties(case.liftSaffman PROPERTIES LABELS "case;coupled;forces" TI
 add_test(case.liftMagnus "bash" "cases/liftForces.sh" "magnus")
 set_tests_properties(case.liftMagnus PROPERTIES LABELS "case;coupled;forces" TIMEOUT 120)
 
+add_test(case.fluidVelocityCellPoint "bash" "cases/liftForces.sh" "sampling")
+set_tests_properties(case.fluidVelocityCellPoint PROPERTIES LABELS "case;coupled;forces" TIMEOUT 180)
+
 add_test(case.damGrading "bash" "cases/damGrading.sh")
 set_tests_properties(case.damGrading PROPERTIES LABELS "case;damBreach" TIMEOUT 400)
 

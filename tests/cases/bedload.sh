@@ -20,6 +20,11 @@
 #       at cells of 2 d moves grains only above theta ~ 0.3-0.4 and carries
 #       about 1/30 of MPM's flux (docs/erosion.md); the test guards that
 #       state, it does not claim agreement.
+#   fluidVelocity cellPoint, theta = 0.8: the fluid velocity taken at each
+#       grain's centre; the grains carry rho g S h within 3 % (the fluid
+#       gives up what the grains gain; a build without the explicit
+#       reaction K (u_centre - u_average) gave 1.14-1.15 on the default
+#       channel at theta 0.1-0.6)
 #   negative control, theta = 0.8 without fluid-particle forces (forces
 #       ( ): the water slides over the bed and runs away, 21 m/s after 6 s):
 #       no grain moves, the transport check above must FAIL on it
@@ -27,7 +32,7 @@
 #       here: the pressure-gradient force alone then carries the bed's form
 #       drag, the water runs at 7.6 m/s and q* = 2.3 (measured;
 #       docs/erosion.md).
-#   bedload.sh          all three runs (about 1 min on one core)
+#   bedload.sh          all four runs (about 1 min on one core)
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseFunctions.sh"
 
@@ -67,6 +72,23 @@ check "above onset: q* against the model's reference $REF_QSTAR" "$qHigh" \
     "theta $thetaHigh: q* $qHigh, expected within a factor of 2 of $REF_QSTAR"
 
 # Negative control: no fluid-particle force
+# the fluid velocity at each grain's centre (fluidVelocity cellPoint): the
+# grains see a faster fluid than their virtual sphere's average, and the
+# fluid must give up exactly that (the explicit reaction K (u_centre -
+# u_average)), so in the steady state the grains still carry rho g S h:
+# within 3 % (the build without that reaction gave 1.14-1.15 on the
+# default channel at theta 0.1-0.6)
+./Allrun -size small -tag cellPoint -fluidVelocity cellPoint -theta "$thetaHigh" -endTime $endTime \
+    > log.Allrun.cellPoint 2>&1 \
+    || { tail -20 log.Allrun.cellPoint; fail "Allrun -fluidVelocity cellPoint (log.Allrun.cellPoint)"; }
+cat cellPoint.theta.$thetaHigh/log.bedloadAnalysis
+grep -q "fluidVelocity cellPoint" cellPoint.theta.$thetaHigh/log.interDemFoam \
+    || fail "the cellPoint run did not report fluidVelocity cellPoint"
+cpRatio=$(value cellPoint.theta.$thetaHigh forceRatio)
+check "cellPoint: fluid force on the grains / imposed stress" "$cpRatio" \
+    'v > 0.97 && v < 1.03' \
+    "theta $thetaHigh, fluidVelocity cellPoint: the grains carry $cpRatio of rho g S h, expected 1 +- 0.03 (momentum not exchanged exactly?)"
+
 setEntry constant/couplingProperties forces "( )"
 ./Allrun -size small -tag noforce -theta "$thetaHigh" -endTime $endTime > log.Allrun.noforce 2>&1 \
     || { tail -20 log.Allrun.noforce; fail "Allrun without fluid forces (log.Allrun.noforce)"; }
@@ -79,4 +101,4 @@ if awk -v a="$c1" -v b="$c2" 'BEGIN { exit !(a > 1e-3 && b > 1e-3) }'
 then
     fail "negative control: without fluid forces theta $thetaHigh still transports (q* $c1, $c2): the check cannot fail"
 fi
-pass "theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b; without fluid forces q* $c1, $c2: the transport check fails as it must"
+pass "theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); without fluid forces q* $c1, $c2: the transport check fails as it must"

@@ -122,6 +122,9 @@ expectError negativeBandwidth "bandwidth -0.003" "> 0" "diffusionCoeffs"
 echo "outsideParticles drop;" >> constant/couplingProperties
 expectError badOutsidePolicy "outsideParticles 'drop'" "ignore" "delete"
 
+echo "fluidVelocity centre;" >> constant/couplingProperties
+expectError badFluidVelocity "fluidVelocity 'centre'" "voidFractionAverage" "cellPoint" "couplingProperties"
+
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts
 sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.05 units box/' DEM/in.liggghts

@@ -30,6 +30,16 @@
 #           = -pi/8 d^3 rho omega_p U y = -3.93e-7 N y
 #       Control: spin reversed (-100 rad/s): F must point to +y; the -y check
 #       fails on it.
+#   liftForces.sh sampling  the fluid velocity a particle sees, taken at its
+#       centre (couplingProperties: fluidVelocity cellPoint; fluidSampler.H).
+#       The Saffman case above with the particle off its cell's centre, at
+#       z_p = 9 mm and 11.5 mm in the cell 8-12 mm (centre 10 mm): the
+#       cell-point interpolation of the linear profile is exact, so u =
+#       G z_p and F_z = 1.61 d^2 (mu rho)^(1/2) G^(1/2) G z_p (F is linear
+#       in u - v). Control: the default, voidFractionAverage (here the
+#       centre model's host-cell value, G 10 mm): F_z 11 % above the
+#       9 mm value, so the 9 mm check fails on it; it must match the 10 mm
+#       value instead.
 #
 # Tolerance 2 % on the magnitude, and the other two components below 1 % of
 # it. The imposed flows are exact solutions that the mesh represents
@@ -45,16 +55,25 @@ mode="${1:-saffman}"
 tolerance=0.02
 
 # run <name> <force model> <flow: couette | couetteReversed | uniform>
-# <DEM motion>: the case
+# <DEM motion> [<particle's z> [<fluidVelocity>]]: the case
 # in tests/run/liftForces-<name>; sets force to the particle's "Fx Fy Fz"
 run()
 {
-    local name=$1 model=$2 ubody=$3 motion=$4
+    local name=$1 model=$2 ubody=$3 motion=$4 zp=${5:-0.01} sampling=${6:-}
     local dir="$runDir/liftForces-$name"
     rm -rf "$dir" && mkdir -p "$runDir" && cp -r "$testsDir/cases/liftForces" "$dir" \
         && cd "$dir" || fail "cannot set up $dir"
     setEntry constant/couplingProperties forces "( $model )"
     printf '%s\n' "$motion" > DEM/in.motion
+    sed -i "s/^create_atoms    1 single 0.006 0.006 0.01 units box$/create_atoms    1 single 0.006 0.006 $zp units box/" \
+        DEM/in.liggghts
+    grep -q "^create_atoms    1 single 0.006 0.006 $zp units box$" DEM/in.liggghts \
+        || fail "$name: cannot place the particle at z = $zp"
+    if [ -n "$sampling" ]
+    then
+        foamDictionary -entry fluidVelocity -add "$sampling" constant/couplingProperties > /dev/null \
+            || fail "$name: cannot set fluidVelocity $sampling"
+    fi
     runApplication blockMesh > /dev/null || fail "$name: blockMesh"
     # 0/U: the imposed flow, cells in blockMesh order (x fastest, then y, z)
     /usr/bin/python3 - "$ubody" > 0/U <<'PY' || fail "$name: cannot write 0/U"
@@ -161,7 +180,28 @@ magnus)
     checkForce "Magnus, spin -z (+y)" "$fc" 2 "${Fy#-}"
     pass "Magnus lift $f N against (0 $Fy 0) N of eq. 16; spin reversed: $fc N"
     ;;
+sampling)
+    G=1
+    saffmanAt() # <z_p>: eq. 15's F_z for the particle at rest at z_p
+    {
+        awk -v d=$d -v r=$rho -v m=$mu -v G=$G -v z=$1 \
+            'BEGIN { printf "%.6e", 1.61*d*d*sqrt(m*r)*sqrt(G)*G*z }'
+    }
+    F9=$(saffmanAt 0.009); F115=$(saffmanAt 0.0115); F10=$(saffmanAt 0.01)
+    run cellPoint9 SaffmanLift couette "# held at rest" 0.009 cellPoint; f9=$force
+    grep -q "fluidVelocity cellPoint" "$runDir/liftForces-cellPoint9/log.interDemFoam" \
+        || fail "the solver did not report fluidVelocity cellPoint"
+    checkForce "cellPoint, z_p = 9 mm" "$f9" 3 "$F9"
+    run cellPoint115 SaffmanLift couette "# held at rest" 0.0115 cellPoint; f115=$force
+    checkForce "cellPoint, z_p = 11.5 mm" "$f115" 3 "$F115"
+    run average9 SaffmanLift couette "# held at rest" 0.009; fc=$force
+    mustFail "the default voidFractionAverage, against the 9 mm value" \
+        checkForce "voidFractionAverage, z_p = 9 mm" "$fc" 3 "$F9"
+    checkForce "voidFractionAverage, z_p = 9 mm (the host cell's 10 mm value)" "$fc" 3 "$F10"
+    pass "fluid velocity at the particle's centre: F_z $f9 N at 9 mm (eq. 15 with u = G z_p: $F9 N)," \
+         "$f115 N at 11.5 mm ($F115 N); the cell average gives $fc N at 9 mm (the centre's $F10 N)"
+    ;;
 *)
-    fail "unknown mode '$mode' (saffman | magnus)"
+    fail "unknown mode '$mode' (saffman | magnus | sampling)"
     ;;
 esac

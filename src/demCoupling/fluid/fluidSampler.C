@@ -3,6 +3,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "fluidSampler.H"
 #include "fvc.H"
+#include "interpolationCellPoint.H"
+
+const Foam::Enum<Foam::demCoupling::fluidSampler::velocitySource>
+Foam::demCoupling::fluidSampler::velocitySourceNames
+({
+    { velocitySource::voidFractionAverage, "voidFractionAverage" },
+    { velocitySource::cellPoint, "cellPoint" },
+});
 
 namespace
 {
@@ -37,12 +45,34 @@ struct readSlot
 
 Foam::demCoupling::fluidSampler::fluidSampler
 (
+    const dictionary& dict,
     const PtrList<forceModel>& forces
 )
 :
+    velocity_(velocitySource::voidFractionAverage),
     needVorticity_(false),
     needViscousStress_(false)
 {
+    const word source
+    (
+        dict.getOrDefault<word>("fluidVelocity", "voidFractionAverage")
+    );
+    if (!velocitySourceNames.found(source))
+    {
+        FatalIOErrorInFunction(dict)
+            << "fluidVelocity '" << source << "' in " << dict.name()
+            << ": allowed are voidFractionAverage (the void-fraction"
+            << " model's weighted average over the particle's cells; the"
+            << " default) and cellPoint (interpolated at the particle's"
+            << " centre in its host cell)" << exit(FatalIOError);
+    }
+    velocity_ = velocitySourceNames[source];
+    if (velocity_ == velocitySource::cellPoint)
+    {
+        Info<< "Fluid velocity at each particle: cell-point interpolation"
+            << " at its centre (fluidVelocity cellPoint)" << endl;
+    }
+
     for (const forceModel& model : forces)
     {
         needVorticity_ = needVorticity_ || model.needsVorticity();
@@ -55,8 +85,9 @@ Foam::demCoupling::fluidSampler::fluidSampler
 
 Foam::label Foam::demCoupling::fluidSampler::width() const
 {
-    // Uf, eps, rhoF, muF, gradP [, vorticity] [, divTau]
-    return 9 + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0);
+    // Uf, eps, rhoF, muF, gradP [, UfAverage] [, vorticity] [, divTau]
+    return 9 + (velocity_ == velocitySource::cellPoint ? 3 : 0)
+      + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0);
 }
 
 
@@ -72,6 +103,10 @@ void Foam::demCoupling::fluidSampler::pack
     out.put(s.rhoF);
     out.put(s.muF);
     out.put(s.gradP);
+    if (velocity_ == velocitySource::cellPoint)
+    {
+        out.put(s.UfAverage);
+    }
     if (needVorticity_)
     {
         out.put(s.vorticity);
@@ -95,6 +130,11 @@ void Foam::demCoupling::fluidSampler::unpack
     s.rhoF = in.scalar();
     s.muF = in.scalar();
     s.gradP = in.vector();
+    s.UfAverage = s.Uf;
+    if (velocity_ == velocitySource::cellPoint)
+    {
+        s.UfAverage = in.vector();
+    }
     if (needVorticity_)
     {
         s.vorticity = in.vector();
@@ -124,7 +164,32 @@ Foam::demCoupling::fluidSampler::sample
     // This processor's part of each particle's weighted averages
     {
         const volVectorField& U = fluid.U();
-        const List<vector> Ui(vf.sample(U));
+        List<vector> Ui(vf.sample(U));
+        if (velocity_ == velocitySource::cellPoint)
+        {
+            forAll(states, i)
+            {
+                states[i].UfAverage = Ui[i];
+            }
+            // At the centre, by the host processor alone; the average
+            // where no processor hosts the particle
+            const interpolationCellPoint<vector> atPoint(U);
+            forAll(Ui, i)
+            {
+                if (particles.hostProc[i] == Pstream::myProcNo())
+                {
+                    Ui[i] = atPoint.interpolate
+                    (
+                        particles.position[i],
+                        particles.cell[i]
+                    );
+                }
+                else if (particles.hostProc[i] >= 0)
+                {
+                    Ui[i] = Zero;
+                }
+            }
+        }
         const scalarList epsi(vf.sample(voidfraction));
         const scalarList rhoi(vf.sample(fluid.rho()));
         const scalarList mui(vf.sample(fluid.mu()()));

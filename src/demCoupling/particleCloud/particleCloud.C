@@ -206,7 +206,7 @@ Foam::demCoupling::particleCloud::particleCloud
     // Models first (cheap, and their input errors come before the DEM's)
     voidFraction_ = voidFractionModel::New(dict, mesh);
     forces_ = forceModel::NewList(dict);
-    sampler_.reset(new fluidSampler(forces_));
+    sampler_.reset(new fluidSampler(dict, forces_));
     momentumCoupling_ = momentumCouplingModel::New(dict, mesh);
     exchange_ = particleExchange::New(dict, mesh);
     locator_.reset(new particleLocator(mesh));
@@ -366,6 +366,14 @@ void Foam::demCoupling::particleCloud::computeForces()
     demK_ = 0;
     demForce_ = Zero;
 
+    // A fluid velocity taken at the particle's centre while the fluid
+    // reacts at its cells' velocities: the difference K (u_centre -
+    // u_average) goes to the fluid explicitly, so that it loses what the
+    // particle gains (fluidSampler.H)
+    const bool reactionAtAverage =
+        sampler_->velocity() == fluidSampler::velocitySource::cellPoint
+     && momentumCoupling_->reactsAtCellVelocity();
+
     // Every processor that holds cells of a particle computes the same
     // force from the same (combined) fluid state
     forAll(states_, i)
@@ -390,6 +398,10 @@ void Foam::demCoupling::particleCloud::computeForces()
         }
 
         demForce_[i] = fluidForce_[i] - demK_[i]*(s.Uf - s.Up);
+        if (reactionAtAverage)
+        {
+            reactingForce_[i] += K_[i]*(s.Uf - s.UfAverage);
+        }
 
         if (!std::isfinite(magSqr(fluidForce_[i])) || !std::isfinite(K_[i]))
         {

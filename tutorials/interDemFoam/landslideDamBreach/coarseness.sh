@@ -37,8 +37,11 @@ cd "${0%/*}" || exit                                # Run from this directory
 #            fifth to two fifths of a cell)
 #   Fco045   F2 at maxCo 0.45: F's spread of the numerics
 #   Flift    F2 with Saffman and Magnus lift
+#   cellPoint  C2, the fluid velocity at each grain's centre (fluidVelocity
+#            cellPoint) instead of its virtual sphere's average
+#   FcellPoint F2, the same
 #------------------------------------------------------------------------------
-all="dry dryCo045 Fdry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift"
+all="dry dryCo045 Fdry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift cellPoint FcellPoint"
 variants=${*:-$all}
 
 # the force models of the lift variants (the tutorial's plus both lifts)
@@ -63,6 +66,8 @@ options()
         Fcentre) echo "-scenario F2 -voidFraction centre" ;;
         Fco045)  echo "-scenario F2 -maxCo 0.45" ;;
         Flift)   echo "-scenario F2 -forces \"$liftForces\"" ;;
+        cellPoint)  echo "-scenario C2 -fluidVelocity cellPoint" ;;
+        FcellPoint) echo "-scenario F2 -fluidVelocity cellPoint" ;;
         *) return 1 ;;
     esac
 }
