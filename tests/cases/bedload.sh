@@ -25,6 +25,11 @@
 #       gives up what the grains gain; a build without the explicit
 #       reaction K (u_centre - u_average) gave 1.14-1.15 on the default
 #       channel at theta 0.1-0.6)
+#   velocityFluctuation (intensity 0.75, eddy time 0.2 s), theta = 0.3:
+#       sustained transport (q* > 1e-3 in both halves; measured 0.0135,
+#       0.0083) with the grains carrying rho g S h within 3 % (measured
+#       1.0007); control: the same run without fluctuations must not
+#       transport (measured 1.5e-4, 9.7e-5)
 #   negative control, theta = 0.8 without fluid-particle forces (forces
 #       ( ): the water slides over the bed and runs away, 21 m/s after 6 s):
 #       no grain moves, the transport check above must FAIL on it
@@ -32,12 +37,13 @@
 #       here: the pressure-gradient force alone then carries the bed's form
 #       drag, the water runs at 7.6 m/s and q* = 2.3 (measured;
 #       docs/erosion.md).
-#   bedload.sh          all four runs (about 1 min on one core)
+#   bedload.sh          all six runs (about 1.5 min on one core)
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseFunctions.sh"
 
 thetaLow=0.2
 thetaHigh=0.8
+thetaFluct=0.3
 REF_QSTAR=0.5            # q* at theta 0.8, small channel: measured 0.570 +- 0.033 (0.502 with explicit DEM drag)
 endTime=6
 
@@ -89,6 +95,40 @@ check "cellPoint: fluid force on the grains / imposed stress" "$cpRatio" \
     'v > 0.97 && v < 1.03' \
     "theta $thetaHigh, fluidVelocity cellPoint: the grains carry $cpRatio of rho g S h, expected 1 +- 0.03 (momentum not exchanged exactly?)"
 
+# turbulent velocity fluctuations seen by the grains (velocityFluctuation,
+# intensity 0.75, eddy time 0.2 s: docs/erosion.md): at theta = 0.3, where
+# the laminar model moves nothing, the bed must transport in both halves of
+# the window, and the grains still carry rho g S h within 3 % (the fluid
+# gives up K u' as the grains take it). Control: the same channel at
+# theta = 0.3 without fluctuations must fail the transport check.
+./Allrun -size small -tag fluct -fluctuation "0.75 0.2" -theta "$thetaFluct" -endTime $endTime \
+    > log.Allrun.fluct 2>&1 \
+    || { tail -20 log.Allrun.fluct; fail "Allrun -fluctuation (log.Allrun.fluct)"; }
+cat fluct.theta.$thetaFluct/log.bedloadAnalysis
+grep -q "Turbulent velocity fluctuations seen by the particles" fluct.theta.$thetaFluct/log.interDemFoam \
+    || fail "the fluctuation run did not report its velocityFluctuation"
+f1=$(value fluct.theta.$thetaFluct qstarHalf1)
+f2=$(value fluct.theta.$thetaFluct qstarHalf2)
+fRatio=$(value fluct.theta.$thetaFluct forceRatio)
+check "fluctuations, theta $thetaFluct: q* first half" "$f1" 'v > 1e-3' \
+    "theta $thetaFluct with fluctuations: q* $f1 in the first half of the window, expected > 1e-3"
+check "fluctuations, theta $thetaFluct: q* second half" "$f2" 'v > 1e-3' \
+    "theta $thetaFluct with fluctuations: q* $f2 in the second half of the window, expected > 1e-3"
+check "fluctuations: fluid force on the grains / imposed stress" "$fRatio" \
+    'v > 0.97 && v < 1.03' \
+    "theta $thetaFluct with fluctuations: the grains carry $fRatio of rho g S h, expected 1 +- 0.03"
+./Allrun -size small -tag laminar -theta "$thetaFluct" -endTime $endTime > log.Allrun.laminar 2>&1 \
+    || { tail -20 log.Allrun.laminar; fail "Allrun, laminar control (log.Allrun.laminar)"; }
+cat laminar.theta.$thetaFluct/log.bedloadAnalysis
+l1=$(value laminar.theta.$thetaFluct qstarHalf1)
+l2=$(value laminar.theta.$thetaFluct qstarHalf2)
+requireNumber "laminar control q* first half" "$l1"
+requireNumber "laminar control q* second half" "$l2"
+if awk -v a="$l1" -v b="$l2" 'BEGIN { exit !(a > 1e-3 && b > 1e-3) }'
+then
+    fail "control: without fluctuations theta $thetaFluct transports too (q* $l1, $l2): the fluctuation check cannot fail"
+fi
+
 setEntry constant/couplingProperties forces "( )"
 ./Allrun -size small -tag noforce -theta "$thetaHigh" -endTime $endTime > log.Allrun.noforce 2>&1 \
     || { tail -20 log.Allrun.noforce; fail "Allrun without fluid forces (log.Allrun.noforce)"; }
@@ -101,4 +141,4 @@ if awk -v a="$c1" -v b="$c2" 'BEGIN { exit !(a > 1e-3 && b > 1e-3) }'
 then
     fail "negative control: without fluid forces theta $thetaHigh still transports (q* $c1, $c2): the check cannot fail"
 fi
-pass "theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); without fluid forces q* $c1, $c2: the transport check fails as it must"
+pass "theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); without fluid forces q* $c1, $c2: the transport check fails as it must"

@@ -125,6 +125,12 @@ expectError badOutsidePolicy "outsideParticles 'drop'" "ignore" "delete"
 echo "fluidVelocity centre;" >> constant/couplingProperties
 expectError badFluidVelocity "fluidVelocity 'centre'" "voidFractionAverage" "cellPoint" "couplingProperties"
 
+echo "velocityFluctuation { intensity -0.1; eddyTime 0.1; }" >> constant/couplingProperties
+expectError negativeIntensity "intensity -0.1" ">= 0" "velocityFluctuation"
+
+echo "velocityFluctuation { intensity 0.5; }" >> constant/couplingProperties
+expectError noEddyTime "eddyTime" "velocityFluctuation"
+
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts
 sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.05 units box/' DEM/in.liggghts

@@ -60,7 +60,7 @@ void checkKeywords(const Foam::dictionary& dict)
     ({
         "demScript", "demRestartScript", "voidFraction", "minVoidFraction",
         "forces", "momentumCoupling", "outsideParticles", "exchange",
-        "demDrag", "fluidVelocity"
+        "demDrag", "fluidVelocity", "velocityFluctuation"
     });
     for (const word& m : voidFractionModel::dictionaryConstructorTablePtr_->sortedToc())
     {

@@ -4,6 +4,7 @@
 #include "fluidSampler.H"
 #include "fvc.H"
 #include "interpolationCellPoint.H"
+#include "gravityMeshObject.H"
 
 const Foam::Enum<Foam::demCoupling::fluidSampler::velocitySource>
 Foam::demCoupling::fluidSampler::velocitySourceNames
@@ -46,10 +47,13 @@ struct readSlot
 Foam::demCoupling::fluidSampler::fluidSampler
 (
     const dictionary& dict,
+    const fvMesh& mesh,
     const PtrList<forceModel>& forces
 )
 :
     velocity_(velocitySource::voidFractionAverage),
+    fluctuation_(),
+    up_(0, 0, 1),
     needVorticity_(false),
     needViscousStress_(false)
 {
@@ -71,6 +75,26 @@ Foam::demCoupling::fluidSampler::fluidSampler
     {
         Info<< "Fluid velocity at each particle: cell-point interpolation"
             << " at its centre (fluidVelocity cellPoint)" << endl;
+    }
+    if (dict.found("velocityFluctuation"))
+    {
+        fluctuation_.reset(new velocityFluctuation(dict));
+        // The solver's gravity (constant/g, read once per run)
+        const vector g(meshObjects::gravity::New(mesh.time()).value());
+        if (mag(g) < SMALL)
+        {
+            FatalIOErrorInFunction(dict)
+                << "velocityFluctuation in " << dict.name() << " needs"
+                << " gravity (constant/g, not zero): the fluctuations'"
+                << " vertical direction is against it" << exit(FatalIOError);
+        }
+        up_ = -g/mag(g);
+        Info<< "Turbulent velocity fluctuations seen by the particles:"
+            << " streamwise r.m.s. " << fluctuation_->intensity()
+            << " |U|, lateral " << velocityFluctuation::lateralRatio
+            << " and vertical " << velocityFluctuation::verticalRatio
+            << " of it, a new eddy every " << fluctuation_->eddyTime()
+            << " s (velocityFluctuation)" << endl;
     }
 
     for (const forceModel& model : forces)
@@ -252,6 +276,18 @@ Foam::demCoupling::fluidSampler::sample
         s.omega = particles.omega[i];
         s.d = particles.diameter[i];
         s.rhoP = particles.density[i];
+    }
+
+    // Turbulent fluctuations, from the combined (same on every processor)
+    // velocity
+    if (fluctuation_.valid())
+    {
+        const scalar t = voidfraction.time().value();
+        forAll(states, i)
+        {
+            particleFluidState& s = states[i];
+            s.Uf += (*fluctuation_)(particles.tag[i], t, s.Uf, up_);
+        }
     }
     return states;
 }

@@ -206,7 +206,7 @@ Foam::demCoupling::particleCloud::particleCloud
     // Models first (cheap, and their input errors come before the DEM's)
     voidFraction_ = voidFractionModel::New(dict, mesh);
     forces_ = forceModel::NewList(dict);
-    sampler_.reset(new fluidSampler(dict, forces_));
+    sampler_.reset(new fluidSampler(dict, mesh, forces_));
     momentumCoupling_ = momentumCouplingModel::New(dict, mesh);
     exchange_ = particleExchange::New(dict, mesh);
     locator_.reset(new particleLocator(mesh));
@@ -366,12 +366,12 @@ void Foam::demCoupling::particleCloud::computeForces()
     demK_ = 0;
     demForce_ = Zero;
 
-    // A fluid velocity taken at the particle's centre while the fluid
-    // reacts at its cells' velocities: the difference K (u_centre -
-    // u_average) goes to the fluid explicitly, so that it loses what the
-    // particle gains (fluidSampler.H)
+    // A fluid velocity taken at the particle's centre, or with turbulent
+    // fluctuations, while the fluid reacts at its cells' velocities: the
+    // difference K (u - u_average) goes to the fluid explicitly, so that
+    // it loses what the particle gains (fluidSampler.H)
     const bool reactionAtAverage =
-        sampler_->velocity() == fluidSampler::velocitySource::cellPoint
+        sampler_->velocityDiffersFromAverage()
      && momentumCoupling_->reactsAtCellVelocity();
 
     // Every processor that holds cells of a particle computes the same

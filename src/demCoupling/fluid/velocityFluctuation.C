@@ -1,0 +1,169 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+#include "velocityFluctuation.H"
+#include "mathematicalConstants.H"
+#include "error.H"
+
+#include <cmath>
+#include <cstdint>
+
+namespace
+{
+
+// A 64-bit mixing function (the finaliser of the splitmix64 generator):
+// consecutive inputs give unrelated outputs
+uint64_t mix(uint64_t x)
+{
+    x += 0x9E3779B97F4A7C15ULL;
+    x = (x ^ (x >> 30))*0xBF58476D1CE4E5B9ULL;
+    x = (x ^ (x >> 27))*0x94D049BB133111EBULL;
+    return x ^ (x >> 31);
+}
+
+// A number in (0, 1) from 53 bits of h
+double unitOpen(const uint64_t h)
+{
+    return (double(h >> 11) + 0.5)/9007199254740992.0;
+}
+
+// Reads a coefficient of the sub-dictionary and stops with the file, the
+// keyword, the value and what is allowed when it is out of range
+Foam::scalar readCoeff
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const bool positive
+)
+{
+    const Foam::scalar v = dict.get<Foam::scalar>(key);
+    if (positive ? !(v > 0) : !(v >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << v << " in " << dict.name() << ": must be "
+            << (positive ? "> 0" : ">= 0") << Foam::exit(Foam::FatalIOError);
+    }
+    return v;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::demCoupling::velocityFluctuation::lateralRatio =
+    1.63/2.30;
+
+const Foam::scalar Foam::demCoupling::velocityFluctuation::verticalRatio =
+    1.27/2.30;
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::velocityFluctuation::velocityFluctuation
+(
+    const dictionary& dict
+)
+:
+    intensity_(0),
+    eddyTime_(1),
+    seed_(0)
+{
+    const dictionary& coeffs = dict.subDict("velocityFluctuation");
+    intensity_ = readCoeff(coeffs, "intensity", false);
+    eddyTime_ = readCoeff(coeffs, "eddyTime", true);
+    seed_ = coeffs.getOrDefault<label>("seed", 0);
+    if (seed_ < 0)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "seed " << seed_ << " in " << coeffs.name()
+            << ": must be >= 0" << exit(FatalIOError);
+    }
+}
+
+
+Foam::demCoupling::velocityFluctuation::velocityFluctuation
+(
+    const scalar intensity,
+    const scalar eddyTime,
+    const label seed
+)
+:
+    intensity_(intensity),
+    eddyTime_(eddyTime),
+    seed_(seed)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::demCoupling::velocityFluctuation::normal
+(
+    const label tag,
+    const int64_t eddy,
+    const label k
+) const
+{
+    // Box-Muller from two independent hashes
+    const uint64_t base =
+        mix(mix(mix(uint64_t(seed_)) ^ uint64_t(tag)) ^ uint64_t(eddy));
+    const double u1 = unitOpen(mix(base ^ uint64_t(2*k + 1)));
+    const double u2 = unitOpen(mix(base ^ uint64_t(2*k + 2)));
+    return std::sqrt(-2.0*std::log(u1))
+        *std::cos(constant::mathematical::twoPi*u2);
+}
+
+
+int64_t Foam::demCoupling::velocityFluctuation::eddy
+(
+    const label tag,
+    const scalar t
+) const
+{
+    // The particle's own shift of the eddy times, in [0, 1) eddyTime
+    const double phase =
+        unitOpen(mix(mix(uint64_t(seed_) ^ 0x5EEDULL) ^ uint64_t(tag)));
+    return int64_t(std::floor(t/eddyTime_ + phase));
+}
+
+
+Foam::vector Foam::demCoupling::velocityFluctuation::operator()
+(
+    const label tag,
+    const scalar t,
+    const vector& U,
+    const vector& up
+) const
+{
+    const scalar magU = mag(U);
+    if (intensity_ <= 0 || magU < VSMALL)
+    {
+        return Zero;
+    }
+    const vector es(U/magU);
+
+    // Vertical: up made normal to the flow (any normal where the flow is
+    // vertical)
+    vector ev(up - (up & es)*es);
+    if (mag(ev) < 1e-6)
+    {
+        const vector trial
+        (
+            mag(es.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)
+        );
+        ev = trial - (trial & es)*es;
+    }
+    ev /= mag(ev);
+    const vector el(ev ^ es);
+
+    const int64_t e = eddy(tag, t);
+    return intensity_*magU
+       *(
+            normal(tag, e, 0)*es
+          + lateralRatio*normal(tag, e, 1)*el
+          + verticalRatio*normal(tag, e, 2)*ev
+        );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,154 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+// The turbulent velocity fluctuations seen by the particles
+// (velocityFluctuation.H) against the statistics they are meant to have:
+// zero mean, streamwise r.m.s. I |U|, lateral and vertical r.m.s. 1.63/2.30
+// and 1.27/2.30 of it (Nezu & Nakagawa 1993) along the directions set by U
+// and gravity, one value per eddy, unrelated values in successive eddies,
+// and the same value for the same particle and time.
+//
+// Sampling error: over n = 40000 independent draws the mean of a unit
+// normal has a standard error of 1/sqrt(n) = 0.005 and its r.m.s. one of
+// 1/sqrt(2 n) = 0.0035; the tolerances are about four standard errors.
+
+#include <gtest/gtest.h>
+#include "velocityFluctuation.H"
+
+using namespace Foam;
+using namespace Foam::demCoupling;
+
+namespace
+{
+
+const label n = 40000;
+
+// Mean and r.m.s. of each component of the fluctuation over n particles
+void statistics
+(
+    const velocityFluctuation& model,
+    const scalar t,
+    const vector& U,
+    const vector& up,
+    vector& mean,
+    vector& rms
+)
+{
+    mean = Zero;
+    vector sq(Zero);
+    for (label tag = 1; tag <= n; ++tag)
+    {
+        const vector u(model(tag, t, U, up));
+        mean += u;
+        sq += cmptMultiply(u, u);
+    }
+    mean /= n;
+    sq /= n;
+    rms = vector(Foam::sqrt(sq.x()), Foam::sqrt(sq.y()), Foam::sqrt(sq.z()));
+}
+
+} // End anonymous namespace
+
+
+TEST(velocityFluctuation, HasTheNearBedTurbulenceIntensities)
+{
+    // Flow along x at 0.5 m/s, gravity along -z: streamwise x, lateral y,
+    // vertical z
+    const velocityFluctuation model(0.3, 0.04, 7);
+    const vector U(0.5, 0, 0);
+    vector mean, rms;
+    statistics(model, 1.234, U, vector(0, 0, 1), mean, rms);
+
+    const scalar sigma = 0.3*0.5;
+    EXPECT_NEAR(rms.x()/sigma, 1, 0.015);
+    EXPECT_NEAR(rms.y()/sigma, 1.63/2.30, 0.015);
+    EXPECT_NEAR(rms.z()/sigma, 1.27/2.30, 0.015);
+    for (direction k = 0; k < 3; ++k)
+    {
+        EXPECT_LT(mag(mean[k])/sigma, 0.02) << "component " << int(k);
+    }
+}
+
+
+TEST(velocityFluctuation, FollowsTheFlowAndGravity)
+{
+    // The same flow turned: along y, gravity along -x (up = +x). The
+    // streamwise r.m.s. must now be along y, the vertical along x
+    const velocityFluctuation model(0.2, 0.04, 7);
+    const vector U(0, -2, 0);
+    vector mean, rms;
+    statistics(model, 3.0, U, vector(1, 0, 0), mean, rms);
+
+    const scalar sigma = 0.2*2;
+    EXPECT_NEAR(rms.y()/sigma, 1, 0.015);
+    EXPECT_NEAR(rms.x()/sigma, 1.27/2.30, 0.015);
+    EXPECT_NEAR(rms.z()/sigma, 1.63/2.30, 0.015);
+}
+
+
+TEST(velocityFluctuation, OneValuePerEddyAndNewOnesUnrelated)
+{
+    const scalar T = 0.04;
+    const velocityFluctuation model(0.3, T, 3);
+    const vector U(1, 0, 0);
+    const vector up(0, 0, 1);
+
+    // Within one eddy the value holds; the next eddy (T later) is another,
+    // with no correlation: r = sum(a b)/sqrt(sum a^2 sum b^2) over the
+    // particles, standard error 1/sqrt(n) = 0.005
+    label held = 0;
+    scalar ab = 0, aa = 0, bb = 0;
+    for (label tag = 1; tag <= n; ++tag)
+    {
+        const scalar t0 = 10.0;
+        const int64_t e = model.eddy(tag, t0);
+        // a time in the same eddy: the eddy's start plus a fraction of T
+        const scalar t1 = t0 + 0.3*T;
+        if (model.eddy(tag, t1) == e)
+        {
+            ++held;
+            EXPECT_EQ(model(tag, t0, U, up), model(tag, t1, U, up));
+        }
+        const scalar a = model(tag, t0, U, up).x();
+        const scalar b = model(tag, t0 + T, U, up).x();
+        EXPECT_EQ(model.eddy(tag, t0 + T), e + 1);
+        ab += a*b;
+        aa += a*a;
+        bb += b*b;
+    }
+    // each particle's eddies are shifted by a fraction of T of its own: a
+    // time 0.3 T later is in the same eddy for about 70 % of them
+    EXPECT_NEAR(scalar(held)/n, 0.7, 0.02);
+    EXPECT_LT(mag(ab/Foam::sqrt(aa*bb)), 0.02);
+}
+
+
+TEST(velocityFluctuation, NothingWithoutFlowOrIntensity)
+{
+    const velocityFluctuation model(0.3, 0.04, 1);
+    EXPECT_EQ(model(5, 1.0, vector::zero, vector(0, 0, 1)), vector::zero);
+    const velocityFluctuation none(0, 0.04, 1);
+    EXPECT_EQ(none(5, 1.0, vector(1, 0, 0), vector(0, 0, 1)), vector::zero);
+    // and it scales with |U|: twice the flow, twice the fluctuation
+    EXPECT_EQ
+    (
+        model(5, 1.0, vector(2, 0, 0), vector(0, 0, 1)),
+        2*model(5, 1.0, vector(1, 0, 0), vector(0, 0, 1))
+    );
+}
+
+
+TEST(velocityFluctuation, SeedsGiveOtherDraws)
+{
+    const velocityFluctuation a(0.3, 0.04, 1), b(0.3, 0.04, 2);
+    label same = 0;
+    for (label tag = 1; tag <= 1000; ++tag)
+    {
+        if (a(tag, 1.0, vector(1, 0, 0), vector(0, 0, 1))
+         == b(tag, 1.0, vector(1, 0, 0), vector(0, 0, 1)))
+        {
+            ++same;
+        }
+    }
+    EXPECT_EQ(same, 0);
+}
