@@ -146,6 +146,9 @@ set_tests_properties(case.liftMagnus PROPERTIES LABELS "case;coupled;forces" TIM
 add_test(case.fluidVelocityCellPoint "bash" "cases/liftForces.sh" "sampling")
 set_tests_properties(case.fluidVelocityCellPoint PROPERTIES LABELS "case;coupled;forces" TIMEOUT 180)
 
+add_test(case.samplingParallel "bash" "cases/samplingParallel.sh")
+set_tests_properties(case.samplingParallel PROPERTIES LABELS "case;coupled;parallel" TIMEOUT 400)
+
 add_test(case.damGrading "bash" "cases/damGrading.sh")
 set_tests_properties(case.damGrading PROPERTIES LABELS "case;damBreach" TIMEOUT 400)
 

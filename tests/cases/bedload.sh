@@ -28,7 +28,7 @@
 #   velocityFluctuation (intensity 0.75, eddy time 0.2 s), theta = 0.3:
 #       sustained transport (q* > 1e-3 in both halves; measured 0.0135,
 #       0.0083) with the grains carrying rho g S h within 3 % (measured
-#       1.0007); control: the same run without fluctuations must not
+#       1.0006); control: the same run without fluctuations must not
 #       transport (measured 1.5e-4, 9.7e-5)
 #   negative control, theta = 0.8 without fluid-particle forces (forces
 #       ( ): the water slides over the bed and runs away, 21 m/s after 6 s):
@@ -77,7 +77,6 @@ check "above onset: q* against the model's reference $REF_QSTAR" "$qHigh" \
     "v > 0.5*$REF_QSTAR && v < 2*$REF_QSTAR" \
     "theta $thetaHigh: q* $qHigh, expected within a factor of 2 of $REF_QSTAR"
 
-# Negative control: no fluid-particle force
 # the fluid velocity at each grain's centre (fluidVelocity cellPoint): the
 # grains see a faster fluid than their virtual sphere's average, and the
 # fluid must give up exactly that (the explicit reaction K (u_centre -
@@ -129,6 +128,7 @@ then
     fail "control: without fluctuations theta $thetaFluct transports too (q* $l1, $l2): the fluctuation check cannot fail"
 fi
 
+# Negative control: no fluid-particle force
 setEntry constant/couplingProperties forces "( )"
 ./Allrun -size small -tag noforce -theta "$thetaHigh" -endTime $endTime > log.Allrun.noforce 2>&1 \
     || { tail -20 log.Allrun.noforce; fail "Allrun without fluid forces (log.Allrun.noforce)"; }

@@ -131,6 +131,12 @@ expectError negativeIntensity "intensity -0.1" ">= 0" "velocityFluctuation"
 echo "velocityFluctuation { intensity 0.5; }" >> constant/couplingProperties
 expectError noEddyTime "eddyTime" "velocityFluctuation"
 
+echo "velocityFluctuation { intensity 0.5; eddytime 0.1; }" >> constant/couplingProperties
+expectError misspeltEddyTime "Unknown keyword 'eddytime'" "intensity, eddyTime and seed" "velocityFluctuation"
+
+echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; seed -1; }" >> constant/couplingProperties
+expectError negativeSeed "seed -1" ">= 0" "velocityFluctuation"
+
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts
 sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.05 units box/' DEM/in.liggghts

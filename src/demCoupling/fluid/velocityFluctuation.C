@@ -70,6 +70,17 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     seed_(0)
 {
     const dictionary& coeffs = dict.subDict("velocityFluctuation");
+    for (const entry& e : coeffs)
+    {
+        const word& key = e.keyword();
+        if (key != "intensity" && key != "eddyTime" && key != "seed")
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Unknown keyword '" << key << "' in " << coeffs.name()
+                << ": allowed are intensity, eddyTime and seed"
+                << exit(FatalIOError);
+        }
+    }
     intensity_ = readCoeff(coeffs, "intensity", false);
     eddyTime_ = readCoeff(coeffs, "eddyTime", true);
     seed_ = coeffs.getOrDefault<label>("seed", 0);

@@ -70,6 +70,51 @@ TEST(velocityFluctuation, HasTheNearBedTurbulenceIntensities)
 }
 
 
+TEST(velocityFluctuation, ComponentsAreIndependent)
+{
+    // Each component its own draw: correlation coefficients between the
+    // components below 0.02 (standard error 1/sqrt(n) = 0.005)
+    const velocityFluctuation model(0.3, 0.04, 11);
+    scalar xy = 0, xz = 0, yz = 0, xx = 0, yy = 0, zz = 0;
+    for (label tag = 1; tag <= n; ++tag)
+    {
+        const vector u(model(tag, 2.5, vector(1, 0, 0), vector(0, 0, 1)));
+        xy += u.x()*u.y();
+        xz += u.x()*u.z();
+        yz += u.y()*u.z();
+        xx += sqr(u.x());
+        yy += sqr(u.y());
+        zz += sqr(u.z());
+    }
+    EXPECT_LT(mag(xy/Foam::sqrt(xx*yy)), 0.02);
+    EXPECT_LT(mag(xz/Foam::sqrt(xx*zz)), 0.02);
+    EXPECT_LT(mag(yz/Foam::sqrt(yy*zz)), 0.02);
+}
+
+
+TEST(velocityFluctuation, VerticalFlowStillFluctuatesAcross)
+{
+    // Flow straight up: no vertical direction normal to it; the two
+    // across-flow components still carry their r.m.s., the streamwise one
+    // lies along z
+    const velocityFluctuation model(0.3, 0.04, 7);
+    vector mean, rms;
+    statistics(model, 1.0, vector(0, 0, 1), vector(0, 0, 1), mean, rms);
+    EXPECT_NEAR(rms.z()/0.3, 1, 0.015);
+    const scalar across = Foam::sqrt(sqr(rms.x()) + sqr(rms.y()))/0.3;
+    EXPECT_NEAR
+    (
+        across,
+        Foam::sqrt
+        (
+            sqr(velocityFluctuation::lateralRatio)
+          + sqr(velocityFluctuation::verticalRatio)
+        ),
+        0.015
+    );
+}
+
+
 TEST(velocityFluctuation, FollowsTheFlowAndGravity)
 {
     // The same flow turned: along y, gravity along -x (up = +x). The
