@@ -690,6 +690,9 @@ VARIANTS = {
     'Fcentre': 'centre void fraction',
     'Fco045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
     'Flift': 'Saffman + Magnus lift',
+    'cellPoint': 'fluid velocity at the grain centre (fluidVelocity cellPoint)',
+    'FcellPoint': 'fluid velocity at the grain centre (fluidVelocity cellPoint)',
+    'fluct': 'turbulent fluctuations (velocityFluctuation 0.75, 0.2 s)',
 }
 
 
