@@ -693,6 +693,7 @@ VARIANTS = {
     'cellPoint': 'fluid velocity at the grain centre (fluidVelocity cellPoint)',
     'FcellPoint': 'fluid velocity at the grain centre (fluidVelocity cellPoint)',
     'fluct': 'turbulent fluctuations (velocityFluctuation 0.75, 0.2 s)',
+    'fluct06': 'turbulent fluctuations (velocityFluctuation 0.6, 0.2 s)',
 }
 
 
