@@ -54,6 +54,25 @@ cat small.theta.*/log.bedloadAnalysis
 
 value() { awk -v k="$2" '$1 == k { n++; v = $2 } END { if (n == 1) print v }' "$1"/bedload.summary; }
 
+# controlRun <tag> <theta> <what is left out> <the check it guards>: a
+# control run of the small channel that must NOT transport in both halves
+# of the window; sets control1 and control2 to its halves' q*
+controlRun()
+{
+    local tag=$1 theta=$2 without=$3 guarded=$4
+    ./Allrun -size small -tag "$tag" -theta "$theta" -endTime $endTime > log.Allrun.$tag 2>&1 \
+        || { tail -20 log.Allrun.$tag; fail "Allrun, control $without (log.Allrun.$tag)"; }
+    cat $tag.theta.$theta/log.bedloadAnalysis
+    control1=$(value $tag.theta.$theta qstarHalf1)
+    control2=$(value $tag.theta.$theta qstarHalf2)
+    requireNumber "control $without: q* first half" "$control1"
+    requireNumber "control $without: q* second half" "$control2"
+    if awk -v a="$control1" -v b="$control2" 'BEGIN { exit !(a > 1e-3 && b > 1e-3) }'
+    then
+        fail "control: $without theta $theta transports too (q* $control1, $control2): $guarded cannot fail"
+    fi
+}
+
 low=small.theta.$thetaLow
 high=small.theta.$thetaHigh
 qLow=$(value $low qstar)
@@ -115,29 +134,11 @@ check "fluctuations, theta $thetaFluct: q* second half" "$f2" 'v > 1e-3' \
 check "fluctuations: fluid force on the grains / imposed stress" "$fRatio" \
     'v > 0.97 && v < 1.03' \
     "theta $thetaFluct with fluctuations: the grains carry $fRatio of rho g S h, expected 1 +- 0.03"
-./Allrun -size small -tag laminar -theta "$thetaFluct" -endTime $endTime > log.Allrun.laminar 2>&1 \
-    || { tail -20 log.Allrun.laminar; fail "Allrun, laminar control (log.Allrun.laminar)"; }
-cat laminar.theta.$thetaFluct/log.bedloadAnalysis
-l1=$(value laminar.theta.$thetaFluct qstarHalf1)
-l2=$(value laminar.theta.$thetaFluct qstarHalf2)
-requireNumber "laminar control q* first half" "$l1"
-requireNumber "laminar control q* second half" "$l2"
-if awk -v a="$l1" -v b="$l2" 'BEGIN { exit !(a > 1e-3 && b > 1e-3) }'
-then
-    fail "control: without fluctuations theta $thetaFluct transports too (q* $l1, $l2): the fluctuation check cannot fail"
-fi
+controlRun laminar "$thetaFluct" "without fluctuations" "the fluctuation check"
+l1=$control1 l2=$control2
 
 # Negative control: no fluid-particle force
 setEntry constant/couplingProperties forces "( )"
-./Allrun -size small -tag noforce -theta "$thetaHigh" -endTime $endTime > log.Allrun.noforce 2>&1 \
-    || { tail -20 log.Allrun.noforce; fail "Allrun without fluid forces (log.Allrun.noforce)"; }
-cat noforce.theta.$thetaHigh/log.bedloadAnalysis
-c1=$(value noforce.theta.$thetaHigh qstarHalf1)
-c2=$(value noforce.theta.$thetaHigh qstarHalf2)
-requireNumber "control q* first half" "$c1"
-requireNumber "control q* second half" "$c2"
-if awk -v a="$c1" -v b="$c2" 'BEGIN { exit !(a > 1e-3 && b > 1e-3) }'
-then
-    fail "negative control: without fluid forces theta $thetaHigh still transports (q* $c1, $c2): the check cannot fail"
-fi
+controlRun noforce "$thetaHigh" "without fluid forces" "the transport check"
+c1=$control1 c2=$control2
 pass "theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); without fluid forces q* $c1, $c2: the transport check fails as it must"
