@@ -90,6 +90,25 @@ maxRelativeDrift()
 # Semi-implicit MULES (an implicit upwind predictor, then the limited
 # high-order correction) and sub-cycles for the phase fraction, as in
 # OpenFOAM's own damBreak: semiImplicitAlpha <nAlphaSubCycles>
+# fallingBed <endTime>: in a copy of tests/cases/particleBed (the current
+# directory), let its 20 particles fall (gravity, integration), dump their
+# DEM state at step 600 to post/bed.600.dump with 17 digits, and write the
+# fields every 60 steps with 17 digits up to endTime
+# (exchangeIdentical.sh, samplingParallel.sh)
+fallingBed()
+{
+    cat >> DEM/in.liggghts <<'DEM'
+fix             gravi all gravity 9.81 vector 0.0 0.0 -1.0
+fix             integr all nve/sphere
+dump            state all custom 600 post/bed.*.dump id x y z vx vy vz
+dump_modify     state sort id format "%d %.17g %.17g %.17g %.17g %.17g %.17g"
+DEM
+    mkdir -p post
+    setEntry system/controlDict endTime "$1"
+    setEntry system/controlDict writeInterval 60
+    setEntry system/controlDict writePrecision 17
+}
+
 semiImplicitAlpha()
 {
     local key='solvers/"alpha.water.*"'

@@ -111,16 +111,7 @@ runCase()  # <exchange> <ranks>
         cd "$d" || exit 1
         sed -i "s/^voidFraction .*/voidFraction      virtualSphere;/" constant/couplingProperties
         echo "exchange          $1;" >> constant/couplingProperties
-        cat >> DEM/in.liggghts <<'DEM'
-fix             gravi all gravity 9.81 vector 0.0 0.0 -1.0
-fix             integr all nve/sphere
-dump            state all custom 600 post/bed.*.dump id x y z vx vy vz
-dump_modify     state sort id format "%d %.17g %.17g %.17g %.17g %.17g %.17g"
-DEM
-        mkdir -p post
-        setEntry system/controlDict endTime $endTime
-        setEntry system/controlDict writeInterval 60
-        setEntry system/controlDict writePrecision 17
+        fallingBed $endTime
         setEntry system/decomposeParDict numberOfSubdomains $2
         runApplication blockMesh || exit 1
         runApplication setFields || exit 1

@@ -42,16 +42,7 @@ runCase()  # <name> <ranks> <extra couplingProperties lines>
     (
         cd "$d" || exit 1
         printf '%s\n' "$extra" >> constant/couplingProperties
-        cat >> DEM/in.liggghts <<'DEM'
-fix             gravi all gravity 9.81 vector 0.0 0.0 -1.0
-fix             integr all nve/sphere
-dump            state all custom 600 post/bed.*.dump id x y z vx vy vz
-dump_modify     state sort id format "%d %.17g %.17g %.17g %.17g %.17g %.17g"
-DEM
-        mkdir -p post
-        setEntry system/controlDict endTime $endTime
-        setEntry system/controlDict writeInterval 60
-        setEntry system/controlDict writePrecision 17
+        fallingBed $endTime
         runApplication blockMesh || exit 1
         runApplication setFields || exit 1
         if [ "$n" -gt 1 ]
