@@ -23,6 +23,12 @@
                                               the Shields number on the
                                               downstream face during
                                               overtopping (damBreachShields.py)
+    damBreachAnalysis.py deposit CASE... [--every 20]
+                                              where the grains are: in the
+                                              flume, on the bed downstream
+                                              of the poured dam's toe (the
+                                              deposit) and how many of those
+                                              move, every 20 s
 
 Reads the DEM dumps CASE/post/particles.<step>.txt and contacts.<step>.txt
 (DEM/in.dam writes them; step x demDt is the time, demDt the DEM step of
@@ -556,6 +562,39 @@ def dam_area():
     return DAM_HEIGHT*(DAM_CREST + 0.5*(up + down))
 
 
+def dam_downstream_toe():
+    """x of the poured dam's downstream toe, m."""
+    up, down = (DAM_HEIGHT/np.tan(np.radians(a)) for a in DAM_SLOPES)
+    return DAM_TOE + up + DAM_CREST + down
+
+
+def deposit(cases, every):
+    """Per case, every `every` seconds of its dumps (and its last): grains
+    in the flume, grains downstream of the poured dam's toe, and of those
+    the ones moving (faster than REST_SPEED): is the deposit at rest or
+    being carried out of the flume?"""
+    toe = dam_downstream_toe()
+    print('# x > %.3f m: downstream of the poured dam; moving: faster than '
+          '%g m/s' % (toe, REST_SPEED))
+    print('%-22s %7s %8s %11s %8s %10s' % ('case', 't [s]', 'flume',
+          'downstream', 'moving', 'dam moving'))
+    for case in cases:
+        dumps = dump_files(case, 'particles')
+        for i, (t, f) in enumerate(dumps):
+            last = i == len(dumps) - 1
+            if not last and abs(t/every - round(t/every)) > 1e-6:
+                continue
+            p = read_dump(f)
+            if p.size == 0:
+                print('%-22s %7.1f %8d %11d %8d %10d' % (case, t, 0, 0, 0, 0))
+                continue
+            down = p[:, 3] > toe
+            moving = np.linalg.norm(p[:, 6:9], axis=1) > REST_SPEED
+            print('%-22s %7.1f %8d %11d %8d %10d'
+                  % (case, t, len(p), down.sum(), (down & moving).sum(),
+                     (~down & moving).sum()))
+
+
 def liggghts_lines(path):
     """The commands of a LIGGGHTS input file, comments and continuations
     (&) joined, as lists of words."""
@@ -822,6 +861,13 @@ if __name__ == '__main__':
         import damBreachShields
         sys.exit(damBreachShields.main(sys.argv[2], sys.argv[3],
                                        sys.argv[4:]))
+    elif len(sys.argv) >= 3 and sys.argv[1] == 'deposit':
+        import argparse
+        ap = argparse.ArgumentParser(prog='damBreachAnalysis.py deposit')
+        ap.add_argument('cases', nargs='+')
+        ap.add_argument('--every', type=float, default=20.0)
+        a = ap.parse_args(sys.argv[2:])
+        deposit(a.cases, a.every)
     elif len(sys.argv) >= 4 and sys.argv[1] == 'compare':
         compare(sys.argv[2], sys.argv[3:])
     elif len(sys.argv) == 2:
