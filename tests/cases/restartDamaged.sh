@@ -24,7 +24,11 @@
 #       -restartFromLastComplete finishes the run, ending where the
 #       uninterrupted run ends (1e-5).
 #   restartDamaged.sh diskFull
-#       the case on a tmpfs with room for about one more write time: the
+#       the case on a tmpfs with room for 1/4, 2/4 and 3/4 of one more
+#       write time (the disk fills in the fluid's fields, the particles'
+#       lagrangian/ files or the DEM restart file): each run must stop
+#       within 30 s with "The write of t = ... failed" and leave 0.01 and
+#       0.02 unchanged (md5). Then room for about 1.5 write times: the
 #       run must stop with "The write of t = ... failed", the earlier time
 #       folders unchanged (md5), and, with room again,
 #       -restartFromLastComplete finishes the run (1e-5). Skipped (exit 77)
@@ -235,15 +239,40 @@ do
         used=$(du -sb . | cut -f1)
         oneTime=$(du -sb $d/0.02 | cut -f1)
         [ "$np" = 2 ] && oneTime=$((2*oneTime))
-        room=$(( (used + 3*oneTime/2)/1024 + 64 ))
         mnt="$runDir/restartDamaged-tmpfs$np"
         mkdir -p "$mnt"
+        # Where the disk fills moves with the room left: in the fluid's
+        # fields, in the particles' lagrangian/ files, in the DEM restart
+        # file. Rooms of 1/4, 2/4 and 3/4 of one more write time each stop
+        # the run with the message and leave 0.01 and 0.02 as they were
+        find $d/0.01 $d/0.02 -type f | sort | xargs md5sum > "$runDir/restartDamaged-before$np.md5"
+        for quarter in 1 2 3
+        do
+            room=$(( (used + quarter*oneTime/4)/1024 + 64 ))
+            mount -t tmpfs -o size=${room}k tmpfs "$mnt" 2>/dev/null \
+                || { echo "SKIPPED: cannot mount a tmpfs (needs root) to fill a disk"; exit 77; }
+            cp -r . "$mnt/case" 2>/dev/null
+            (
+                cd "$mnt/case" || exit 1
+                setEntry system/controlDict startFrom latestTime
+                setEntry system/controlDict endTime 0.05
+                timed "$runDir/restartDamaged-diskFull$np-$quarter.log" $np
+                stopsQuickly "$np rank(s), disk full with $quarter/4 of a write time" \
+                    "$runDir/restartDamaged-diskFull$np-$quarter.log" "The write of t = .* failed"
+                md5sum -c --quiet "$runDir/restartDamaged-before$np.md5" \
+                    || fail "$np rank(s): the full disk ($quarter/4) changed earlier write times"
+                echo "$np rank(s), room for $quarter/4 of a write time: stopped with the message in" \
+                    "$(grep -A3 'The write of t = .* failed' "$runDir/restartDamaged-diskFull$np-$quarter.log" \
+                       | grep -o "$mnt/case/[^ )\"]*" | head -1 | sed "s|$mnt/case/||")"
+            ) || { umount "$mnt"; exit 1; }
+            umount "$mnt" || fail "umount"
+        done
+        room=$(( (used + 3*oneTime/2)/1024 + 64 ))
         mount -t tmpfs -o size=${room}k tmpfs "$mnt" 2>/dev/null \
             || { echo "SKIPPED: cannot mount a tmpfs (needs root) to fill a disk"; exit 77; }
         trap 'cd / && umount "$mnt" 2>/dev/null' EXIT
         cp -r . "$mnt/case" || fail "copy to tmpfs"
         cd "$mnt/case" || fail "cd tmpfs"
-        find $d/0.01 $d/0.02 -type f | sort | xargs md5sum > "$runDir/restartDamaged-before$np.md5"
         setEntry system/controlDict startFrom latestTime
         setEntry system/controlDict endTime 0.05
         timed "$runDir/restartDamaged-diskFull$np.log" $np

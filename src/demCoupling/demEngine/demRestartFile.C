@@ -295,12 +295,16 @@ void Foam::demCoupling::demRestartFile::commit
 }
 
 
-void Foam::demCoupling::demRestartFile::writeFluid(Time& runTime)
+void Foam::demCoupling::demRestartFile::guardWrite
+(
+    const Time& runTime,
+    const std::function<void()>& write
+)
 {
     const bool throwing = FatalIOError.throwExceptions();
     try
     {
-        runTime.write();
+        write();
     }
     catch (const Foam::IOerror& err)
     {
@@ -317,6 +321,12 @@ void Foam::demCoupling::demRestartFile::writeFluid(Time& runTime)
             << exit(FatalError);
     }
     FatalIOError.throwExceptions(throwing);
+}
+
+
+void Foam::demCoupling::demRestartFile::writeFluid(Time& runTime)
+{
+    guardWrite(runTime, [&runTime]() { runTime.write(); });
 }
 
 

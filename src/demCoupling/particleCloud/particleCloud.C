@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "particleCloud.H"
 #include "meshReach.H"
+#include "demRestartFile.H"
 #include "fvcFlux.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
@@ -601,7 +602,17 @@ void Foam::demCoupling::particleCloud::writeParticles() const
 {
     if (active())
     {
-        couplingDiagnostics::writeParticles(mesh_, particles_, fluidForce_);
+        demRestartFile::guardWrite
+        (
+            mesh_.time(),
+            [this]()
+            {
+                couplingDiagnostics::writeParticles
+                (
+                    mesh_, particles_, fluidForce_
+                );
+            }
+        );
     }
 }
 
