@@ -7,6 +7,8 @@
 # empty cache, must end with a clear message and a non-zero exit, and leave
 # no half-unpacked OpenFOAM source tree behind. Needs root (unshare -n);
 # skipped (77) otherwise.
+# Reference: none, a behaviour (docs/reliability.md, row 30). Measured: the
+# ERROR line and no half-built tree; no number.
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 

@@ -9,6 +9,8 @@
 #     once the particles have changed eps)
 #   - nAlphaSubCycles 0
 #   - icAlpha 0.5 (interFoam's isotropic compression)
+# Reference: the messages quoted in docs/reliability.md, row 24. Measured:
+# each stops with FatalIOError naming system/fvSolution; no number.
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 

@@ -38,6 +38,10 @@
 #       drag, the water runs at 7.6 m/s and q* = 2.3 (measured;
 #       docs/erosion.md).
 #   bedload.sh          all six runs (about 1.5 min on one core)
+# Measured (docs/erosion.md, Test): theta 0.2 q* 6.4e-5; theta 0.8 q* 0.547
+# (0.558, 0.536 in the two halves), the grains carrying 1.002 of rho g S h;
+# cellPoint 0.997; fluctuations 0.0135, 0.0083 and 1.0006; no fluid forces
+# q* 1.6e-5.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseFunctions.sh"
 

@@ -16,6 +16,10 @@
 #     (deltaT 0.5 s = 3.6 tau_p): exit 1 naming the coupling step;
 #   - bad input: a missing DEM script: a clear error naming the script and
 #     the keyword, no crash.
+# Reference: the measured maps checkDemScene reads (the cell-size study's
+# meshStudy.dat, the stability map and the drag-stability runs) and eq. 19,
+# 0.1341 m/s. Measured: 0.134 m/s and 0.74 %, as the maps give them; the
+# explicit drag's blow-up named at 1.8 tau_p (docs/sceneCheck.md).
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 

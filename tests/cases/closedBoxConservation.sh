@@ -10,6 +10,9 @@
 # subCycled: serial, the phase fraction semi-implicit (MULESCorr yes) with
 # 3 sub-cycles per step and maxCo/maxAlphaCo 1.5 (3 times the tutorial's)
 # parallel: METIS splits the case into 2, mpirun -np 2, reconstructPar.
+# Reference: exact conservation (a closed box), and the surge front at
+# t = 0.1 s against Martin & Moyce (1952): 0.164 m +- 25 %. Measured: drift
+# 2.2e-11 (subCycled).
 #------------------------------------------------------------------------------
 mode="${1:-serial}"
 . "${0%/*}/caseFunctions.sh"

@@ -12,6 +12,17 @@
 #   - an unknown voidFraction / momentumCoupling / force model (the valid
 #     names are listed)
 #   - a restart from a time at which every particle had left (no DEM state)
+#   - and the rest of docs/reliability.md's table of bad inputs (35 checks:
+#     'did you mean' for misspelt keywords, wrong types, ranges, missing
+#     sub-dictionaries, file coupling, a DEM box smaller than the mesh,
+#     restarts without demRestartScript or DEM state, a non-finite particle
+#     also on 2 ranks, bad fluidVelocity and velocityFluctuation values)
+#     and its warnings (Rayleigh time, particles outside the mesh);
+#   - the output guard: 3000 identical LIGGGHTS lines run to the end, 12000
+#     are stopped.
+# Reference: the messages quoted in docs/reliability.md. Measured: each stops
+# non-zero within 120 s with its message (or warns and runs on); on 2 ranks
+# the non-finite particle ends both ranks, exit 1 after 1 s.
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 

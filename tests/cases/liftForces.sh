@@ -49,6 +49,9 @@
 # particle's own volume in its cell (eps = 1 - V_p/V_cell = 0.992: the flow
 # is slightly displaced around that cell, under 0.8 % of u) and the
 # 12-digit output.
+# Measured: saffman +0.10 % of 1.61e-8 N, magnus +0.10 % of 3.93e-7 N,
+# sampling +0.06 % (z_p = 9 mm) and +0.03 % (11.5 mm); the default average
+# within 0.1 % of the 10 mm value.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseFunctions.sh"
 mode="${1:-saffman}"

@@ -16,6 +16,10 @@
 #   3b. the same in parallel (2 ranks, processor0/<time>/liggghts.restart).
 # Then a settled packing at rest stays at rest across a restart (contact
 # histories survive): checked in restartPacking below.
+# Reference: the uninterrupted run. Measured (docs/reliability.md): U 3.5e-8,
+# p_rgh 1.2e-9, alpha 1.2e-9, particle z 4.3e-9 and vz 8.6e-10; on 2 ranks
+# 3.6e-9; the packing 3.8e-5 m from the uninterrupted run's (without
+# contact histories 2.5e-4 m).
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 

@@ -39,6 +39,11 @@
 # velocity in the 7th-8th digit (case.restart); d(eps)/dt from the solid
 # flux carries the particle's velocity into the pressure equation, so that
 # reaches U at about 3e-6 (the particle itself agrees to 3e-10).
+# Reference: the uninterrupted run (1e-5) and the limits above (30 s, 10 MB).
+# Measured (docs/reliability.md, 1 / 2 ranks): truncated 0.18 / 0.52 s,
+# 74 / 76 kB, then U within 2.6e-6 / 1.7e-6; forged 0.59 / 1.54 s, 3.3 MB;
+# killed 0.07 / 0.34 s, 71 / 73 kB; disk full 0.98 / 0.66 s, 441 / 249 kB;
+# room for 1/4-3/4 of a write 0.92-1.09 / 0.81-0.82 s, 225-250 kB.
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 
