@@ -19,6 +19,10 @@
 #     the grading message, and its dam is not kept;
 #   - the checker on C's dam with 20 mm grains removed to 3.5 points under
 #     their share fails; at 2.5 points under it passes (the 3-point bound).
+# Reference: the gradings' target mass shares (docs/damBreach.md, The
+# scene). Measured (results/grading.small.dat): C 0.313/0.399/0.288 of
+# 0.3/0.4/0.3; F 0.158/0.203/0.247/0.188/0.205 of
+# 0.15/0.20/0.25/0.20/0.20; solid fraction 0.547 (C) and 0.567 (F).
 . "$(dirname "$0")/caseFunctions.sh"
 
 copyTutorial landslideDamBreach damGrading
