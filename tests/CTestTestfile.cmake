@@ -28,6 +28,10 @@ set_tests_properties(case.closedBoxParallel PROPERTIES LABELS "case;parallel" TI
 add_test(case.badAlphaControls "bash" "cases/badAlphaControls.sh")
 set_tests_properties(case.badAlphaControls PROPERTIES LABELS "case;input" TIMEOUT 300)
 
+# The library's floors: no include runs back up (bin/includeLayers)
+add_test(build.includeLayers "bash" "cases/includeLayers.sh")
+set_tests_properties(build.includeLayers PROPERTIES LABELS "build" TIMEOUT 60)
+
 add_test(build.allwmakeOffline "bash" "cases/allwmakeOffline.sh")
 set_tests_properties(build.allwmakeOffline PROPERTIES
     LABELS "build;input" TIMEOUT 300 SKIP_RETURN_CODE 77)

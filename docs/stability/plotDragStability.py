@@ -2,9 +2,9 @@
 # interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
 # Copyright (C) 2026 the interDemFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
-"""Chart of dragStability.dat (runDragStability.sh): explicit vs implicit
-drag in the DEM steps against the coupling interval over the particle (or
-bed) response time. Writes dragStability.png."""
+"""Chart of etc/sceneMaps/dragStability.dat (runDragStability.sh): explicit
+vs implicit drag in the DEM steps against the coupling interval over the
+particle (or bed) response time. Writes dragStability.png here."""
 import os
 import numpy as np
 import matplotlib
@@ -12,7 +12,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 here = os.path.dirname(os.path.abspath(__file__))
-rows = [l.split() for l in open(os.path.join(here, "dragStability.dat"))
+maps = os.path.join(here, "..", "..", "etc", "sceneMaps")
+rows = [l.split() for l in open(os.path.join(maps, "dragStability.dat"))
         if l.strip() and not l.startswith("#")]
 fig, axes = plt.subplots(1, 2, figsize=(10, 4))
 for ax, scene, ylabel in (

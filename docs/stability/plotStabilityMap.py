@@ -4,8 +4,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """Stability map of the void-fraction models (see runStabilityMap.sh).
 
-Reads runs/<model>-<dx/d>/log.interDemFoam; writes stabilityMap.dat and
-stabilityMap.png. A run is 'bounded' when it reached the end, nothing went
+Reads runs/<model>-<dx/d>/log.interDemFoam; writes
+etc/sceneMaps/stabilityMap.dat (the map checkDemScene reads) and
+stabilityMap.png here. A run is 'bounded' when it reached the end, nothing went
 non-finite, eps stayed in [floor, 1] (by construction; the floor hits are
 counted) and the continuity error stayed below 1e-3 (sum local, per step).
 """
@@ -34,7 +35,9 @@ for case in sorted(glob.glob(os.path.join(runs, "*-*"))):
                      maxCont=max(cont) if cont else float("nan"),
                      wall=wall, bounded=bounded))
 
-with open("stabilityMap.dat", "w") as f:
+out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                   "etc", "sceneMaps", "stabilityMap.dat")
+with open(out, "w") as f:
     f.write("# settling cloud, 64 particles of 1 mm, 0.1 s; per model and dx/d\n")
     f.write("# model dx/d bounded ended nonFinite minEps floorHitSteps/steps"
             " maxContinuityErr wall[s]\n")
@@ -43,7 +46,7 @@ with open("stabilityMap.dat", "w") as f:
                 % (r["model"], r["ratio"], "yes" if r["bounded"] else "NO",
                    "yes" if r["ended"] else "no", "yes" if r["nonfinite"] else "no",
                    r["minEps"], r["floorSteps"], r["steps"], r["maxCont"], r["wall"]))
-print(open("stabilityMap.dat").read())
+print(open(out).read())
 
 import matplotlib
 matplotlib.use("Agg")

@@ -17,7 +17,8 @@
 #   bed: benchmarks/quietBed (825 beads of 2 mm at rest under 8 mm/s, its
 #     drag response time tau_b = m/K = 0.042 s from Rong's K at eps 0.41),
 #     dt = 5e-4 ... 0.1 s (dt/tau_b 0.012 ... 2.4); plate pressure noise.
-# Writes dragStability.dat (scene scheme dt ratio error_or_std blown) and,
+# Writes etc/sceneMaps/dragStability.dat (scene scheme dt ratio
+# error_or_std blown; the map checkDemScene reads) and,
 # with plotDragStability.py, dragStability.png. About 5 min on one core.
 #------------------------------------------------------------------------------
 cd "${0%/*}" || exit 1
@@ -25,7 +26,7 @@ cd "${0%/*}" || exit 1
 . "$WM_PROJECT_DIR/bin/tools/RunFunctions"
 runs="$PWD/runs/dragStability"
 mkdir -p "$runs"
-out="$PWD/dragStability.dat"
+out="$INTERDEMFOAM_DIR/etc/sceneMaps/dragStability.dat"
 echo "# scene scheme dt_s dt_over_tau error_or_noise blown" > "$out"
 
 tau=$(awk 'BEGIN { printf "%.6g", 2500*2e-4^2/(18*1e-3) }')

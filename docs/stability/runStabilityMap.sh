@@ -8,7 +8,7 @@
 # cloud) released at rest in a 20 x 20 x 40 mm water column, 0.1 s, for each
 # model and cell size dx/d. For each run: did it end, did anything go
 # non-finite, the lowest eps reached, the time steps where the floor bit, the
-# largest continuity error, the wall time. Writes stabilityMap.dat and
+# largest continuity error, the wall time. Writes etc/sceneMaps/stabilityMap.dat and
 # stabilityMap.png (run from anywhere; the cases go to ./runs).
 #   runStabilityMap.sh ["models"] ["ratios"]
 #------------------------------------------------------------------------------

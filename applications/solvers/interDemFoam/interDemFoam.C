@@ -35,6 +35,8 @@ Description
 #include "particleCloud.H"
 #include "twoPhaseFluidView.H"
 #include "demRestartFile.H"
+#include "caseInputCheck.H"
+#include "floatingPointStop.H"
 #include "cfdStageTimes.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
@@ -55,9 +57,12 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
 
+    // controlDict before Time reads it (Time divides by writeInterval)
+    demCoupling::caseInputCheck::controlDict(args);
     #include "selectDemStartTime.H"
 
     #include "createTime.H"
+    demCoupling::floatingPointStop::install(runTime);
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"

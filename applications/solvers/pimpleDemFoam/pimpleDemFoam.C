@@ -32,6 +32,8 @@ Description
 #include "particleCloud.H"
 #include "singlePhaseFluidView.H"
 #include "demRestartFile.H"
+#include "caseInputCheck.H"
+#include "floatingPointStop.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -49,9 +51,12 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
 
+    // controlDict before Time reads it (Time divides by writeInterval)
+    demCoupling::caseInputCheck::controlDict(args);
     #include "selectDemStartTime.H"
 
     #include "createTime.H"
+    demCoupling::floatingPointStop::install(runTime);
     #include "createMesh.H"
     #include "createControl.H"
     #include "createTimeControls.H"

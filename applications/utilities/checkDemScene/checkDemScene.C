@@ -10,8 +10,10 @@ Description
     against the cells, the DEM step against the Rayleigh time, the coupling
     step against the particle response time, the particle Courant number,
     and, for each void-fraction model, the expected error and stability at
-    this cell size from the project's measured maps (docs/meshStudy.dat,
-    docs/stability/*.dat), with a verdict (demCoupling::sceneCheck).
+    this cell size from the project's measured maps (etc/sceneMaps/), with
+    a verdict (demCoupling::sceneCheck). The settings are parsed as the
+    solver parses them (couplingControls, the models' selectors), so a
+    setting the solver would refuse stops here too.
 
     Reads the mesh, constant/couplingProperties, constant/transportProperties,
     constant/g and system/controlDict; LIGGGHTS runs the DEM script's setup
@@ -27,12 +29,15 @@ Usage
     -velocity     the expected particle speed [m/s] for the Courant number
                   (default: the median particle's terminal velocity)
     -maps         the folder of the measured tables (default
-                  $INTERDEMFOAM_DIR/docs)
+                  $INTERDEMFOAM_DIR/etc/sceneMaps)
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "demEngine.H"
+#include "couplingControls.H"
+#include "voidFractionModel.H"
+#include "forceModel.H"
 #include "sceneCheck.H"
 
 using namespace Foam;
@@ -72,6 +77,125 @@ namespace
             rmDir(scratchFolder, true);
         }
     }
+
+    //- The case's constant/couplingProperties, or none
+    autoPtr<IOdictionary> readCouplingDict(const fvMesh& mesh)
+    {
+        IOobject couplingIO
+        (
+            "couplingProperties", mesh.time().constant(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if (!couplingIO.typeHeaderOk<IOdictionary>(true))
+        {
+            return nullptr;
+        }
+        return autoPtr<IOdictionary>::New(couplingIO);
+    }
+
+    //- The DEM script must exist (named with its keyword)
+    void requireScript(const dictionary& couplingDict, const fileName& caseDir)
+    {
+        fileName path(couplingDict.get<fileName>("demScript"));
+        path.expand();
+        if (!path.isAbsolute())
+        {
+            path = caseDir/path;
+        }
+        if (!isFile(path))
+        {
+            FatalIOErrorInFunction(couplingDict)
+                << "Cannot open the DEM script " << path << " (keyword"
+                << " demScript, relative to the case)" << exit(FatalIOError);
+        }
+    }
+
+    //- A scratch copy of the case for LIGGGHTS to run the script's setup
+    //  in (read_restart, create_atoms, walls, materials: the particles as
+    //  they start), so that the files the script opens (logs, fix print,
+    //  dumps) leave the case as it is: every folder of the case but the
+    //  time folders and decomposed copies, and the case's own files; a
+    //  folder or file above 64 MB (results: dumps, VTK) is left out, a
+    //  folder then made empty (the script may write into it)
+    fileName scratchCopy(const fileName& caseDir)
+    {
+        const fileName scratch
+        (
+            fileName(getEnv("TMPDIR").empty() ? "/tmp" : getEnv("TMPDIR"))
+           /("checkDemScene." + Foam::name(pid()))
+        );
+        rmDir(scratch, true);
+        mkDir(scratch);
+        scratchFolder = scratch;
+        std::atexit(removeScratch);
+
+        const off_t copyLimit = 64*1024*1024;
+        for (const fileName& f : readDir(caseDir, fileName::FILE))
+        {
+            if (Foam::fileSize(caseDir/f) < copyLimit)
+            {
+                cp(caseDir/f, scratch/f);
+            }
+        }
+        for (const fileName& d : readDir(caseDir, fileName::DIRECTORY))
+        {
+            scalar t = 0;
+            if (readScalar(d, t) || d.startsWith("processor"))
+            {
+                continue;
+            }
+            if (folderSize(caseDir/d, copyLimit) < copyLimit)
+            {
+                cp(caseDir/d, scratch/d);
+            }
+            else
+            {
+                mkDir(scratch/d);
+            }
+        }
+        return scratch;
+    }
+
+    //- The check: the settings parsed as the solver does, the DEM set up
+    //  in the scratch copy; the number of failures
+    label checkScene
+    (
+        const fvMesh& mesh,
+        const dictionary& couplingDict,
+        const demCoupling::sceneMaps& maps,
+        const scalar target,
+        const scalar velocity
+    )
+    {
+        const Time& runTime = mesh.time();
+        const fileName caseDir(runTime.globalPath());
+
+        demCoupling::couplingControls controls(couplingDict, runTime);
+        const autoPtr<demCoupling::voidFractionModel> voidFraction
+        (
+            demCoupling::voidFractionModel::New(couplingDict, mesh)
+        );
+        const PtrList<demCoupling::forceModel> forces
+        (
+            demCoupling::forceModel::NewList(couplingDict)
+        );
+
+        requireScript(couplingDict, caseDir);
+        const fileName scratch(scratchCopy(caseDir));
+        autoPtr<demCoupling::demEngine> engine
+        (
+            new demCoupling::demEngine(couplingDict, runTime, scratch)
+        );
+        controls.resolveDemDrag(engine());
+
+        demCoupling::sceneCheck check
+        (
+            mesh, maps, controls, voidFraction(), forces
+        );
+        const label failures = check.run(engine(), target, velocity);
+        engine.clear();
+        return failures;
+    }
 }
 
 int main(int argc, char *argv[])
@@ -97,7 +221,7 @@ int main(int argc, char *argv[])
     argList::addOption
     (
         "maps", "dir", "folder of the measured tables (default"
-        " $INTERDEMFOAM_DIR/docs)"
+        " $INTERDEMFOAM_DIR/etc/sceneMaps)"
     );
 
     #include "setRootCase.H"
@@ -117,19 +241,14 @@ int main(int argc, char *argv[])
         args.getOrDefault<fileName>("maps", demCoupling::sceneMaps::defaultDir())
     );
 
-    IOobject couplingIO
-    (
-        "couplingProperties", runTime.constant(), mesh,
-        IOobject::MUST_READ, IOobject::NO_WRITE, false
-    );
-    if (!couplingIO.typeHeaderOk<IOdictionary>(true))
+    const autoPtr<IOdictionary> couplingDict(readCouplingDict(mesh));
+    if (!couplingDict.valid())
     {
         Info<< "No constant/couplingProperties: a case without particles"
             << " (plain two-phase VoF), nothing to check" << nl
             << "checkDemScene: ok" << nl << "End" << nl << endl;
         return 0;
     }
-    const IOdictionary couplingDict(couplingIO);
 
     // The scene as the run starts
     if (runTime.value() > 0)
@@ -139,72 +258,8 @@ int main(int argc, char *argv[])
         runTime.setTime(instant(0, "0"), 0);
     }
 
-    // LIGGGHTS runs the script's setup (read_restart, create_atoms, walls,
-    // materials: the particles as they start) in a scratch copy, so that
-    // the files the script opens (logs, fix print, dumps) leave the case
-    // as it is
-    const fileName caseDir(runTime.globalPath());
-    const fileName scratch
-    (
-        fileName(getEnv("TMPDIR").empty() ? "/tmp" : getEnv("TMPDIR"))
-       /("checkDemScene." + Foam::name(pid()))
-    );
-    rmDir(scratch, true);
-    mkDir(scratch);
-    scratchFolder = scratch;
-    std::atexit(removeScratch);
-    const fileName script(couplingDict.get<fileName>("demScript"));
-    {
-        fileName path(script);
-        path.expand();
-        if (!path.isAbsolute())
-        {
-            path = caseDir/path;
-        }
-        if (!isFile(path))
-        {
-            FatalIOErrorInFunction(couplingDict)
-                << "Cannot open the DEM script " << path << " (keyword"
-                << " demScript, relative to the case)" << exit(FatalIOError);
-        }
-    }
-    // Every folder of the case but the time folders and decomposed copies,
-    // and the case's own files; a folder or file above 64 MB (results:
-    // dumps, VTK) is left out, a folder then made empty (the script may
-    // write into it)
-    const off_t copyLimit = 64*1024*1024;
-    for (const fileName& f : readDir(caseDir, fileName::FILE))
-    {
-        if (Foam::fileSize(caseDir/f) < copyLimit)
-        {
-            cp(caseDir/f, scratch/f);
-        }
-    }
-    for (const fileName& d : readDir(caseDir, fileName::DIRECTORY))
-    {
-        scalar t = 0;
-        if (readScalar(d, t) || d.startsWith("processor"))
-        {
-            continue;
-        }
-        if (folderSize(caseDir/d, copyLimit) < copyLimit)
-        {
-            cp(caseDir/d, scratch/d);
-        }
-        else
-        {
-            mkDir(scratch/d);
-        }
-    }
-
-    autoPtr<demCoupling::demEngine> engine
-    (
-        new demCoupling::demEngine(couplingDict, runTime, scratch)
-    );
-
-    demCoupling::sceneCheck check(mesh, couplingDict, maps);
-    const label failures = check.run(engine(), target, velocity);
-    engine.clear();
+    const label failures =
+        checkScene(mesh, couplingDict(), maps, target, velocity);
 
     Info<< (failures ? "checkDemScene: FAIL" : "checkDemScene: ok") << nl
         << "End" << nl << endl;

@@ -4,11 +4,9 @@
 #include "couplingControls.H"
 #include "demEngine.H"
 #include "meshReach.H"
-#include "voidFractionModel.H"
-#include "forceModel.H"
+#include "inputCheck.H"
+#include "couplingKeywords.H"
 #include "Switch.H"
-
-#include <vector>
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
 
@@ -29,77 +27,12 @@ Foam::demCoupling::couplingControls::demDragPolicyNames
 
 namespace
 {
-
-// Levenshtein distance, for "did you mean"
-Foam::label editDistance(const std::string& a, const std::string& b)
-{
-    std::vector<Foam::label> prev(b.size() + 1), cur(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i)
-    {
-        cur[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j)
-        {
-            const Foam::label sub = prev[j - 1] + (a[i - 1] != b[j - 1]);
-            cur[j] = std::min(std::min(prev[j] + 1, cur[j - 1] + 1), sub);
-        }
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
+    // The keywords of couplingProperties the controls read
+    const Foam::demCoupling::couplingKeywords::declare keywords
+    (
+        {"outsideParticles", "demDrag"}
+    );
 }
-
-// Every keyword of couplingProperties must be one this code reads: a typo
-// ("minVoidfraction") would otherwise fall back to a default or be
-// ignored without a word
-void checkKeywords(const Foam::dictionary& dict)
-{
-    using namespace Foam;
-    using namespace Foam::demCoupling;
-
-    wordList known
-    ({
-        "demScript", "demRestartScript", "voidFraction", "minVoidFraction",
-        "forces", "momentumCoupling", "outsideParticles", "exchange",
-        "demDrag", "fluidVelocity", "velocityFluctuation"
-    });
-    for (const word& m : voidFractionModel::dictionaryConstructorTablePtr_->sortedToc())
-    {
-        known.append(m + "Coeffs");
-    }
-    for (const word& m : forceModel::dictionaryConstructorTablePtr_->sortedToc())
-    {
-        known.append(m + "Coeffs");
-    }
-
-    for (const word& key : dict.toc())
-    {
-        if (key == "FoamFile" || known.found(key))
-        {
-            continue;
-        }
-        word best;
-        label bestDistance = labelMax;
-        for (const word& k : known)
-        {
-            const label d = editDistance(key, k);
-            if (d < bestDistance)
-            {
-                bestDistance = d;
-                best = k;
-            }
-        }
-        FatalIOErrorInFunction(dict)
-            << "Unknown keyword '" << key << "' in " << dict.name() << nl;
-        if (bestDistance <= max(label(2), label(key.size()/3)))
-        {
-            FatalIOError << "    Did you mean '" << best << "'?" << nl;
-        }
-        FatalIOError
-            << "    Allowed: " << flatOutput(known) << exit(FatalIOError);
-    }
-}
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -113,58 +46,75 @@ Foam::demCoupling::couplingControls::couplingControls
     dict_(dict),
     outside_(outsidePolicy::ignore),
     demDrag_(demDragPolicy::implicitDrag),
+    demDragSet_(dict.found("demDrag")),
     adjustTimeStep_
     (
         runTime.controlDict().getOrDefault<Switch>("adjustTimeStep", false)
     )
 {
-    checkKeywords(dict);
+    // Every keyword must be one some room of the library reads
+    inputCheck::keywords(dict, couplingKeywords::allowed());
 
-    const word outside(dict.getOrDefault<word>("outsideParticles", "ignore"));
-    if (!outsidePolicyNames.found(outside))
-    {
-        FatalIOErrorInFunction(dict)
-            << "outsideParticles '" << outside << "' in "
-            << dict.name() << ": allowed are ignore (no fluid force on a"
-            << " particle outside the fluid mesh, counted) and delete"
-            << " (removed from the DEM)" << exit(FatalIOError);
-    }
-    outside_ = outsidePolicyNames[outside];
+    outside_ = inputCheck::selectOrDefault
+    (
+        dict, "outsideParticles", outsidePolicyNames, outsidePolicy::ignore,
+        "ignore (no fluid force on a particle outside the fluid mesh,"
+        " counted) and delete (removed from the DEM)"
+    );
 
-    // How the DEM applies the drag (see docs/forces.md, "Quiet dense beds")
-    const word demDrag(dict.getOrDefault<word>("demDrag", "implicit"));
-    if (!demDragPolicyNames.found(demDrag))
-    {
-        FatalIOErrorInFunction(dict)
-            << "demDrag '" << demDrag << "' in " << dict.name() << ": allowed"
-            << " are implicit (the drag K (u - v) applied in every DEM step"
-            << " with the particle's velocity of that step; the default) and"
-            << " explicit (the whole force held over the coupling interval)"
-            << exit(FatalIOError);
-    }
-    demDrag_ = demDragPolicyNames[demDrag];
+    // How the DEM applies the drag (see docs/forces.md, "Quiet dense
+    // beds"); without the keyword the DEM script decides (checkDem)
+    demDrag_ = inputCheck::selectOrDefault
+    (
+        dict, "demDrag", demDragPolicyNames, demDragPolicy::implicitDrag,
+        "implicit (the drag K (u - v) applied in every DEM step with the"
+        " particle's velocity of that step; the default) and explicit (the"
+        " whole force held over the coupling interval)"
+    );
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::demCoupling::couplingControls::checkDem
+void Foam::demCoupling::couplingControls::resolveDemDrag
 (
-    const demEngine& engine,
-    const fvMesh& mesh
-) const
+    const demEngine& engine
+)
 {
+    if (!demDragSet_ && !engine.implicitDrag())
+    {
+        // A case written before demDrag existed: its script's
+        // couple/cfd/force holds the whole force over the interval
+        demDrag_ = demDragPolicy::explicitForce;
+        Info<< "DEM drag: explicit (the DEM script " << engine.script()
+            << " has couple/cfd/force, not couple/cfd/force/implicit, and "
+            << dict_.name() << " sets no demDrag: the whole force is held"
+            << " over the coupling interval, as before demDrag existed; set"
+            << " demDrag explicit to say so, or use couple/cfd/force/implicit"
+            << " for the drag in every DEM step)" << endl;
+        return;
+    }
     if (implicitDemDrag() && !engine.implicitDrag())
     {
         FatalIOErrorInFunction(dict_)
-            << "demDrag implicit (" << (dict_.found("demDrag") ? "set" : "the"
-            " default") << " in " << dict_.name() << ") needs the fix" << nl
+            << "demDrag implicit (set in " << dict_.name() << ") needs the"
+            << " fix" << nl
             << "    fix cfd2 all couple/cfd/force/implicit" << nl
             << "in the DEM script " << engine.script() << " instead of"
             << " couple/cfd/force; or set demDrag explicit."
             << exit(FatalIOError);
     }
     Info<< "DEM drag: " << demDragPolicyNames[demDrag_] << endl;
+}
+
+
+void Foam::demCoupling::couplingControls::checkDem
+(
+    const demEngine& engine,
+    const fvMesh& mesh
+)
+{
+    resolveDemDrag(engine);
 
     // The DEM box must hold the whole fluid mesh: where it does not, a
     // particle leaves the DEM while still in the fluid
@@ -185,6 +135,30 @@ void Foam::demCoupling::couplingControls::checkDem
             << "    Enlarge the region of create_box in the DEM script"
             << " (it may be larger than the mesh, not smaller)."
             << exit(FatalIOError);
+    }
+
+    // A particle wider than the domain fits nowhere in it: its volume
+    // cannot be spread over cells it does not fit in (the directions the
+    // fluid solves for; a 2-D mesh's empty direction does not count)
+    const scalar dMax = engine.largestDiameter();
+    scalar domain = GREAT;
+    for (direction k = 0; k < vector::nComponents; ++k)
+    {
+        if (mesh.geometricD()[k] > 0)
+        {
+            domain = min(domain, min(meshBox.span()[k], demBox.span()[k]));
+        }
+    }
+    if (dMax > domain)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The largest particle of the DEM script " << engine.script()
+            << " has diameter " << dMax << " m, larger than the narrowest"
+            << " extent of the fluid mesh and DEM box, " << domain << " m:"
+            << " it does not fit in the domain." << nl
+            << "    Particles must be smaller than the domain (and, for"
+            << " the void-fraction models, at most about the size of a"
+            << " cell; checkDemScene tells)." << exit(FatalIOError);
     }
 
     checkDemTimeStep(engine);

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "demEngine.H"
+#include "demStartState.H"
 #include "demRestartFile.H"
 #include "demScriptCheck.H"
 #include "meshReach.H"
@@ -15,6 +16,8 @@
 #include <cmath>
 #include <fenv.h>
 #include <csignal>
+#include <cctype>
+#include <algorithm>
 
 // LIGGGHTS, through its installed C++ headers (libliggghts-dev)
 #include "liggghts/lammps.h"
@@ -57,6 +60,22 @@ struct fpeTrapsOff
     ~fpeTrapsOff() { feclearexcept(FE_ALL_EXCEPT); feenableexcept(traps); }
 };
 
+// LIGGGHTS keeps the text of the command it runs in Input::line, a
+// protected member: read through a pointer to member formed in a derived
+// class, the one way C++ lets code outside the class name it
+struct inputLineAccess : public LAMMPS_NS::Input
+{
+    static char* LAMMPS_NS::Input::* member()
+    {
+        return &inputLineAccess::line;
+    }
+};
+
+const char* currentInputLine(const LAMMPS_NS::Input& input)
+{
+    return input.*inputLineAccess::member();
+}
+
 
 } // End anonymous namespace
 
@@ -90,96 +109,13 @@ void Foam::demCoupling::demEngine::command
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::fileName Foam::demCoupling::demEngine::restartFile
+void Foam::demCoupling::demEngine::startLiggghts
 (
-    const Time& runTime,
-    const word& timeName
+    const fileName& caseDir,
+    const fileName& restartFile,
+    const fileName& demLog
 )
 {
-    // The master's (processor0's in a decomposed case), the same name on
-    // every rank
-    fileName file(demRestartFile(runTime, timeName).file());
-    Pstream::scatter(file);
-    return file;
-}
-
-
-Foam::demCoupling::demEngine::demEngine
-(
-    const dictionary& couplingDict,
-    const Time& runTime,
-    const fileName& workDir
-)
-:
-    script_(couplingDict.get<fileName>("demScript")),
-    coupleEvery_(-1),
-    lmp_(nullptr),
-    ownsMPI_(false),
-    firstRun_(true),
-    restarted_(false),
-    started_(false),
-    inserts_(false),
-    emptied_(false),
-    nOwned_(0),
-    implicitDrag_(false),
-    interval_(0)
-{
-    // Paths of the DEM script (and inside it) are relative to the case
-    // (or to workDir, where LIGGGHTS then runs and logs)
-    const fileName caseDir(workDir.empty() ? runTime.globalPath() : workDir);
-
-    // A run that starts after 0 continues from the DEM state of that time
-    fileName restart;
-    if (runTime.value() > 0)
-    {
-        const demRestartFile state(runTime, runTime.timeName());
-        restart = restartFile(runTime, runTime.timeName());
-        string why;
-        if (Pstream::master())
-        {
-            why = state.problem();
-        }
-        Pstream::scatter(why);
-        if (!why.empty())
-        {
-            FatalIOErrorInFunction(runTime.controlDict())
-                << "The run starts at t = " << runTime.timeName()
-                << " s, but the DEM state of that time is not usable: "
-                << restart << nl << "    " << why.c_str() << "." << nl
-                << "    Start from an earlier complete time"
-                << " (interDemFoam -restartFromLastComplete, or startFrom"
-                << " startTime; startTime <t>), or from 0."
-                << exit(FatalIOError);
-        }
-        if (!couplingDict.found("demRestartScript"))
-        {
-            FatalIOErrorInFunction(couplingDict)
-                << "Restarting at t = " << runTime.timeName() << " s needs"
-                << " the keyword demRestartScript: a LIGGGHTS script that"
-                << " begins with" << nl
-                << "    read_restart ${restartFile}" << nl
-                << "and repeats what restart files do not hold (materials,"
-                << " pair style, walls, integration and coupling fixes)."
-                << exit(FatalIOError);
-        }
-        script_ = couplingDict.get<fileName>("demRestartScript");
-        restarted_ = true;
-    }
-
-    script_.expand();
-    if (!script_.isAbsolute())
-    {
-        script_ = caseDir/script_;
-    }
-
-    {
-        const demScriptCheck check(script_, caseDir, couplingDict);
-        coupleEvery_ = check.coupleEvery();
-        inserts_ = check.inserts();
-    }
-
     int mpiUp = 0;
     MPI_Initialized(&mpiUp);
     if (!mpiUp)
@@ -196,12 +132,6 @@ Foam::demCoupling::demEngine::demEngine
             << exit(FatalError);
     }
 
-    // A restarted run logs to log.liggghts.<time>: the log of the run it
-    // continues is kept
-    const fileName demLog
-    (
-        caseDir/(restarted_ ? "log.liggghts." + runTime.timeName() : "log.liggghts")
-    );
     // On a restart the script gets the file as the index variable
     // restartFile (set before the script runs, so a script's own
     // "variable restartFile index <default>" yields to it). LIGGGHTS's
@@ -209,7 +139,7 @@ Foam::demCoupling::demEngine::demEngine
     // neither itself.
     std::string a0("liggghts"), a1("-log"), a2("none"), a3("-screen"),
         a4("none"), a5("-echo"), a6("none"), a7("-var"), a8("restartFile"),
-        a9(restart);
+        a9(restartFile);
     char* argv[] =
     {
         &a0[0], &a1[0], &a2[0], &a3[0], &a4[0], &a5[0], &a6[0], &a7[0],
@@ -221,7 +151,7 @@ Foam::demCoupling::demEngine::demEngine
         << script_ << ", log " << demLog;
     if (restarted_)
     {
-        Info<< nl << "DEM: restarting from " << restart;
+        Info<< nl << "DEM: restarting from " << restartFile;
     }
     Info<< endl;
 
@@ -234,7 +164,22 @@ Foam::demCoupling::demEngine::demEngine
         fpeTrapsOff noTraps;
         lmp_ = new LAMMPS_NS::LAMMPS(argc, argv, solverComm());
     }
-    screenGuard_.reset(new demOutputGuard("screen", stdout, false));
+    openOutput(demLog);
+}
+
+
+void Foam::demCoupling::demEngine::openOutput(const fileName& demLog)
+{
+    // An error LIGGGHTS reports stops the run here, with its message and
+    // the command it was running: LIGGGHTS prints it to the screen first
+    // (Error::one to the screen only), so the screen's guard stops the run
+    const demOutputGuard::errorHook onError =
+        [this](const std::string& message)
+        {
+            liggghtsError(message);
+        };
+
+    screenGuard_.reset(new demOutputGuard("screen", stdout, false, onError));
     lmp_->screen = screenGuard_->stream();
     if (Pstream::master())
     {
@@ -248,8 +193,14 @@ Foam::demCoupling::demEngine::demEngine
         logGuard_.reset(new demOutputGuard(demLog, log, true));
         lmp_->logfile = logGuard_->stream();
     }
-    command(script_, true);
+}
 
+
+void Foam::demCoupling::demEngine::checkScriptResult
+(
+    const dictionary& couplingDict
+)
+{
     // Authoritative check on the live instance (the script may 'include')
     if
     (
@@ -284,6 +235,182 @@ Foam::demCoupling::demEngine::demEngine
             << " style (atom_style granular): particles need a radius and a"
             << " mass." << exit(FatalIOError);
     }
+
+    if (!(timeStep() > 0) || !std::isfinite(timeStep()))
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "The DEM script " << script_ << " sets timestep "
+            << timeStep() << ": must be > 0 (the DEM step in seconds, a"
+            << " whole fraction of the CFD deltaT and at most 20 % of the"
+            << " Rayleigh time of the smallest particle)"
+            << exit(FatalIOError);
+    }
+
+    checkParticleProperties(couplingDict);
+
+    // A script without a time-integration fix (nve/sphere, ...) is legal
+    // (a bed held in place) but its particles never move
+    bool integrates = false;
+    for (int i = 0; i < lmp_->modify->nfix; ++i)
+    {
+        integrates = integrates || lmp_->modify->fix[i]->time_integrate;
+    }
+    if (!integrates)
+    {
+        Info<< "Warning: the DEM script " << script_ << " has no"
+            << " time-integration fix (e.g. fix integr all nve/sphere): the"
+            << " particles never move (meant for a bed held in place)."
+            << endl;
+    }
+}
+
+
+void Foam::demCoupling::demEngine::checkParticleProperties
+(
+    const dictionary& couplingDict
+) const
+{
+    using constant::mathematical::pi;
+
+    // The first particle of this rank without a positive, finite diameter
+    // and density: its DEM id, diameter and density (id -1: none)
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    List<scalar> bad({-1, 0, 0});
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        const double r = atom.radius[i];
+        const double rho =
+            r > 0 ? atom.rmass[i]/(4.0/3.0*pi*r*r*r) : atom.rmass[i];
+        if (!(r > 0) || !std::isfinite(r) || !(rho > 0) || !std::isfinite(rho))
+        {
+            bad = List<scalar>({scalar(atom.tag[i]), 2*r, rho});
+            break;
+        }
+    }
+    List<List<scalar>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = bad;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    for (const List<scalar>& b : all)
+    {
+        if (b[0] >= 0)
+        {
+            FatalIOErrorInFunction(couplingDict)
+                << "DEM particle " << label(b[0]) << " has diameter "
+                << b[1] << " m and density " << b[2] << " kg/m3 after the"
+                << " DEM script " << script_ << ": every particle needs a"
+                << " diameter > 0 and a density > 0 (set ... diameter D"
+                << " density RHO, or the insertion's distributions)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::demCoupling::demEngine::liggghtsError
+(
+    const std::string& message
+)
+{
+    // The log holds the message too (LIGGGHTS would have written it there
+    // after the screen)
+    if (logGuard_.valid())
+    {
+        logGuard_->append(message);
+    }
+
+    // The command LIGGGHTS was running, and where it stands in the script
+    // files (the first line that holds it)
+    std::string current;
+    if (lmp_ && lmp_->input)
+    {
+        const char* line = currentInputLine(*lmp_->input);
+        if (line)
+        {
+            current = line;
+        }
+    }
+    while (!current.empty() && std::isspace(current.back()))
+    {
+        current.pop_back();
+    }
+
+    FatalErrorInFunction
+        << "LIGGGHTS stopped with an error:" << nl
+        << "    " << message.c_str() << nl;
+    if (!current.empty())
+    {
+        FatalError
+            << "    in the command: " << current.c_str() << nl;
+        const std::string where
+        (
+            demScriptCheck::whereIs(current, script_, runDir_)
+        );
+        if (!where.empty())
+        {
+            FatalError << "    " << where.c_str() << nl;
+        }
+    }
+    FatalError
+        << "    (DEM script " << script_ << "; LIGGGHTS's own log: "
+        << "log.liggghts in the case)" << exit(FatalError);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::demEngine::demEngine
+(
+    const dictionary& couplingDict,
+    const Time& runTime,
+    const fileName& workDir
+)
+:
+    script_(),
+    runDir_(workDir.empty() ? runTime.globalPath() : workDir),
+    coupleEvery_(-1),
+    lmp_(nullptr),
+    ownsMPI_(false),
+    firstRun_(true),
+    restarted_(false),
+    started_(false),
+    inserts_(false),
+    emptied_(false),
+    nOwned_(0),
+    implicitDrag_(false),
+    interval_(0)
+{
+    // Paths of the DEM script (and inside it) are relative to the case
+    // (or to workDir, where LIGGGHTS then runs and logs)
+
+    // What the DEM starts from: demScript, or at t > 0 the verified DEM
+    // state of that time with demRestartScript (the restart room)
+    const demStartState start(couplingDict, runTime, runDir_);
+    script_ = start.script();
+    restarted_ = start.restarted();
+
+    {
+        const demScriptCheck check(script_, runDir_, couplingDict);
+        coupleEvery_ = check.coupleEvery();
+        inserts_ = check.inserts();
+    }
+
+    // A restarted run logs to log.liggghts.<time>: the log of the run it
+    // continues is kept
+    startLiggghts
+    (
+        runDir_,
+        start.restartFile(),
+        runDir_
+       /(
+            restarted_
+          ? "log.liggghts." + runTime.timeName()
+          : word("log.liggghts")
+        )
+    );
+
+    command(script_, true);
+    checkScriptResult(couplingDict);
 
     Info<< "DEM: time step " << timeStep() << " s, couple_every "
         << coupleEvery_ << ", " << nParticles() << " particle(s)" << nl
@@ -467,6 +594,20 @@ Foam::scalar Foam::demCoupling::demEngine::rayleighTime
     dSmallest = 2*dE[0];
     ESmallest = dE[1];
     return global.value;
+}
+
+
+Foam::scalar Foam::demCoupling::demEngine::largestDiameter() const
+{
+    const LAMMPS_NS::Atom& atom = *lmp_->atom;
+    double dMax = 0;
+    for (int i = 0; i < atom.nlocal; ++i)
+    {
+        dMax = std::max(dMax, 2*atom.radius[i]);
+    }
+    double global = 0;
+    MPI_Allreduce(&dMax, &global, 1, MPI_DOUBLE, MPI_MAX, solverComm());
+    return global;
 }
 
 

@@ -75,6 +75,16 @@ ssize_t Foam::demCoupling::demOutputGuard::take(const char* buf, size_t n)
             repeats_ = 1;
         }
         line_.clear();
+        if (onError_ && lastLine_.compare(0, 5, "ERROR") == 0)
+        {
+            // LIGGGHTS reports an error and is about to exit or abort:
+            // keep its line, then stop the run with its message
+            std::fwrite(buf, 1, i + 1, target_);
+            std::fflush(target_);
+            tripped_ = true;
+            onError_(lastLine_);
+            return n;
+        }
         if (repeats_ > maxRepeats)
         {
             std::fwrite(buf, 1, i + 1, target_);
@@ -124,7 +134,8 @@ Foam::demCoupling::demOutputGuard::demOutputGuard
 (
     const std::string& what,
     FILE* target,
-    bool ownsTarget
+    bool ownsTarget,
+    const errorHook& onError
 )
 :
     what_(what),
@@ -133,7 +144,9 @@ Foam::demCoupling::demOutputGuard::demOutputGuard
     stream_(nullptr),
     repeats_(0),
     commandBytes_(0),
-    tripped_(false)
+    tripped_(false),
+    command_(),
+    onError_(onError)
 {
     cookie_io_functions_t io;
     io.read = nullptr;
@@ -169,6 +182,16 @@ void Foam::demCoupling::demOutputGuard::startCommand(const std::string& command)
 {
     command_ = command;
     commandBytes_ = 0;
+}
+
+
+void Foam::demCoupling::demOutputGuard::append(const std::string& line)
+{
+    if (target_)
+    {
+        std::fputs((line + "\n").c_str(), target_);
+        std::fflush(target_);
+    }
 }
 
 

@@ -2,8 +2,9 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "demScriptCheck.H"
-#include "IFstream.H"
 #include "DynamicList.H"
+
+#include <fstream>
 
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * //
 
@@ -28,6 +29,97 @@ Foam::wordList Foam::demCoupling::demScriptCheck::words
 }
 
 
+void Foam::demCoupling::demScriptCheck::forEachCommand
+(
+    std::istream& is,
+    const std::function<void(const label, const wordList&)>& visit
+)
+{
+    // Join LIGGGHTS continuation lines ('&' at the end) while reading; a
+    // command is numbered by its first line
+    std::string line, joined;
+    label lineNo = 0, firstLine = 1;
+    while (std::getline(is, line))
+    {
+        ++lineNo;
+        if (joined.empty())
+        {
+            firstLine = lineNo;
+        }
+        const auto amp = line.find_last_not_of(" \t\r");
+        if (amp != std::string::npos && line[amp] == '&')
+        {
+            joined += line.substr(0, amp) + ' ';
+            continue;
+        }
+        joined += line;
+        const wordList w(words(joined));
+        joined.clear();
+        visit(firstLine, w);
+    }
+}
+
+
+Foam::fileName Foam::demCoupling::demScriptCheck::includePath
+(
+    const fileName& path,
+    const fileName& caseDir
+)
+{
+    return path.isAbsolute() ? path : caseDir/path;
+}
+
+
+std::string Foam::demCoupling::demScriptCheck::whereIs
+(
+    const std::string& command,
+    const fileName& script,
+    const fileName& caseDir,
+    const label depth
+)
+{
+    std::ifstream is(script.c_str());
+    const wordList target(words(command));
+    if (!is.good() || target.empty() || depth > 16)
+    {
+        return std::string();
+    }
+    std::string found;
+    forEachCommand
+    (
+        is,
+        [&](const label lineNo, const wordList& w)
+        {
+            if (!found.empty())
+            {
+                return;
+            }
+            if (w == target)
+            {
+                fileName shown(script);
+                if (shown.compare(0, caseDir.size() + 1, caseDir + "/") == 0)
+                {
+                    shown = shown.substr(caseDir.size() + 1);
+                }
+                found = shown + " line " + std::to_string(lineNo);
+            }
+            else if
+            (
+                w.size() == 2 && w[0] == "include"
+             && w[1].find('$') == std::string::npos
+            )
+            {
+                found = whereIs
+                (
+                    command, includePath(w[1], caseDir), caseDir, depth + 1
+                );
+            }
+        }
+    );
+    return found;
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
 void Foam::demCoupling::demScriptCheck::scan
@@ -38,7 +130,7 @@ void Foam::demCoupling::demScriptCheck::scan
     const label parentLine
 )
 {
-    IFstream is(script);
+    std::ifstream is(script.c_str());
     if (!is.good())
     {
         FatalIOErrorInFunction(dict_)
@@ -65,82 +157,67 @@ void Foam::demCoupling::demScriptCheck::scan
             << exit(FatalIOError);
     }
 
-    // Join LIGGGHTS continuation lines ('&' at the end) while reading
-    std::string line, joined;
-    label lineNo = 0;
-    while (is.getLine(line))
-    {
-        ++lineNo;
-        const auto amp = line.find_last_not_of(" \t\r");
-        if (amp != std::string::npos && line[amp] == '&')
+    forEachCommand
+    (
+        is,
+        [&](const label lineNo, const wordList& w)
         {
-            joined += line.substr(0, amp) + ' ';
-            continue;
-        }
-        joined += line;
-        const wordList w(words(joined));
-        joined.clear();
-
-        if (w.size() == 2 && w[0] == "include")
-        {
-            // A path with LIGGGHTS variables (${dir}/in.x) is left to the
-            // check on the live instance
-            if (w[1].find('$') == std::string::npos)
+            if (w.size() == 2 && w[0] == "include")
             {
-                fileName inc(w[1]);
-                if (!inc.isAbsolute())
+                // A path with LIGGGHTS variables (${dir}/in.x) is left to
+                // the check on the live instance
+                if (w[1].find('$') == std::string::npos)
                 {
-                    inc = caseDir_/inc;
+                    scan(includePath(w[1], caseDir_), depth + 1, script, lineNo);
                 }
-                scan(inc, depth + 1, script, lineNo);
+                return;
             }
-            continue;
-        }
-        if (w.size() < 4 || w[0] != "fix")
-        {
-            continue;
-        }
-        if (w[3] == "couple/cfd")
-        {
-            haveCouple_ = true;
-            // fix <id> <group> couple/cfd couple_every <N> mpi
-            if
+            if (w.size() < 4 || w[0] != "fix")
+            {
+                return;
+            }
+            if (w[3] == "couple/cfd")
+            {
+                haveCouple_ = true;
+                // fix <id> <group> couple/cfd couple_every <N> mpi
+                if
+                (
+                    w.size() < 7
+                 || (w[4] != "couple_every" && w[4] != "every")
+                 || w[6] != "mpi"
+                )
+                {
+                    FatalIOErrorInFunction(dict_)
+                        << "DEM script " << script << " line " << lineNo
+                        << ": expected" << nl
+                        << "    fix <id> all couple/cfd couple_every <N> mpi"
+                        << nl << "(interDemFoam exchanges data through MPI"
+                        << " in one process; the 'file' coupling is not"
+                        << " supported)" << exit(FatalIOError);
+                }
+                if (!readLabel(w[5], coupleEvery_) || coupleEvery_ < 1)
+                {
+                    FatalIOErrorInFunction(dict_)
+                        << "DEM script " << script << " line " << lineNo
+                        << ": couple_every must be a whole number >= 1"
+                        << " written out (not a variable), found '" << w[5]
+                        << "'" << exit(FatalIOError);
+                }
+            }
+            else if
             (
-                w.size() < 7
-             || (w[4] != "couple_every" && w[4] != "every")
-             || w[6] != "mpi"
+                w[3] == "couple/cfd/force" || w[3] == "couple/cfd/dragforce"
+             || w[3] == "couple/cfd/force/implicit"
             )
             {
-                FatalIOErrorInFunction(dict_)
-                    << "DEM script " << script << " line " << lineNo
-                    << ": expected" << nl
-                    << "    fix <id> all couple/cfd couple_every <N> mpi" << nl
-                    << "(interDemFoam exchanges data through MPI in one"
-                    << " process; the 'file' coupling is not supported)"
-                    << exit(FatalIOError);
+                haveForce_ = true;
             }
-            if (!readLabel(w[5], coupleEvery_) || coupleEvery_ < 1)
+            else if (w[3].compare(0, 7, "insert/") == 0)
             {
-                FatalIOErrorInFunction(dict_)
-                    << "DEM script " << script << " line " << lineNo
-                    << ": couple_every must be a whole number >= 1 written"
-                    << " out (not a variable), found '" << w[5] << "'"
-                    << exit(FatalIOError);
+                inserts_ = true;
             }
         }
-        else if
-        (
-            w[3] == "couple/cfd/force" || w[3] == "couple/cfd/dragforce"
-         || w[3] == "couple/cfd/force/implicit"
-        )
-        {
-            haveForce_ = true;
-        }
-        else if (w[3].compare(0, 7, "insert/") == 0)
-        {
-            inserts_ = true;
-        }
-    }
+    );
 }
 
 

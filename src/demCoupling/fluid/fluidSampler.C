@@ -5,6 +5,8 @@
 #include "fvc.H"
 #include "interpolationCellPoint.H"
 #include "gravityMeshObject.H"
+#include "inputCheck.H"
+#include "couplingKeywords.H"
 
 const Foam::Enum<Foam::demCoupling::fluidSampler::velocitySource>
 Foam::demCoupling::fluidSampler::velocitySourceNames
@@ -15,6 +17,12 @@ Foam::demCoupling::fluidSampler::velocitySourceNames
 
 namespace
 {
+
+// The keywords of couplingProperties the sampler reads
+const Foam::demCoupling::couplingKeywords::declare keywords
+(
+    {"fluidVelocity", "velocityFluctuation"}
+);
 
 // Writes scalars and vectors one after the other into a buffer slot, or
 // reads them back in the same order
@@ -57,20 +65,14 @@ Foam::demCoupling::fluidSampler::fluidSampler
     needVorticity_(false),
     needViscousStress_(false)
 {
-    const word source
+    velocity_ = inputCheck::selectOrDefault
     (
-        dict.getOrDefault<word>("fluidVelocity", "voidFractionAverage")
+        dict, "fluidVelocity", velocitySourceNames,
+        velocitySource::voidFractionAverage,
+        "voidFractionAverage (the void-fraction model's weighted average"
+        " over the particle's cells; the default) and cellPoint"
+        " (interpolated at the particle's centre in its host cell)"
     );
-    if (!velocitySourceNames.found(source))
-    {
-        FatalIOErrorInFunction(dict)
-            << "fluidVelocity '" << source << "' in " << dict.name()
-            << ": allowed are voidFractionAverage (the void-fraction"
-            << " model's weighted average over the particle's cells; the"
-            << " default) and cellPoint (interpolated at the particle's"
-            << " centre in its host cell)" << exit(FatalIOError);
-    }
-    velocity_ = velocitySourceNames[source];
     if (velocity_ == velocitySource::cellPoint)
     {
         Info<< "Fluid velocity at each particle: cell-point interpolation"

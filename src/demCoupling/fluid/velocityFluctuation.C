@@ -4,6 +4,7 @@
 #include "velocityFluctuation.H"
 #include "mathematicalConstants.H"
 #include "error.H"
+#include "inputCheck.H"
 
 #include <cmath>
 #include <cstdint>
@@ -25,25 +26,6 @@ uint64_t mix(uint64_t x)
 double unitOpen(const uint64_t h)
 {
     return (double(h >> 11) + 0.5)/9007199254740992.0;
-}
-
-// Reads a coefficient of the sub-dictionary and stops with the file, the
-// keyword, the value and what is allowed when it is out of range
-Foam::scalar readCoeff
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const bool positive
-)
-{
-    const Foam::scalar v = dict.get<Foam::scalar>(key);
-    if (positive ? !(v > 0) : !(v >= 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " " << v << " in " << dict.name() << ": must be "
-            << (positive ? "> 0" : ">= 0") << Foam::exit(Foam::FatalIOError);
-    }
-    return v;
 }
 
 } // End anonymous namespace
@@ -70,26 +52,19 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     seed_(0)
 {
     const dictionary& coeffs = dict.subDict("velocityFluctuation");
-    for (const entry& e : coeffs)
-    {
-        const word& key = e.keyword();
-        if (key != "intensity" && key != "eddyTime" && key != "seed")
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "Unknown keyword '" << key << "' in " << coeffs.name()
-                << ": allowed are intensity, eddyTime and seed"
-                << exit(FatalIOError);
-        }
-    }
-    intensity_ = readCoeff(coeffs, "intensity", false);
-    eddyTime_ = readCoeff(coeffs, "eddyTime", true);
-    seed_ = coeffs.getOrDefault<label>("seed", 0);
-    if (seed_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "seed " << seed_ << " in " << coeffs.name()
-            << ": must be >= 0" << exit(FatalIOError);
-    }
+    inputCheck::keywords(coeffs, {"intensity", "eddyTime", "seed"});
+    intensity_ = inputCheck::get<scalar>
+    (
+        coeffs, "intensity", &inputCheck::nonNegative, ">= 0"
+    );
+    eddyTime_ = inputCheck::get<scalar>
+    (
+        coeffs, "eddyTime", &inputCheck::positive, "> 0"
+    );
+    seed_ = inputCheck::getOrDefault<label>
+    (
+        coeffs, "seed", 0, [](const label s) { return s >= 0; }, ">= 0"
+    );
 }
 
 

@@ -4,6 +4,8 @@
 #include "particleCloud.H"
 #include "meshReach.H"
 #include "demRestartFile.H"
+#include "sceneMaps.H"
+#include "inputCheck.H"
 #include "fvcFlux.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
@@ -16,6 +18,17 @@
 #include <malloc.h>
 #endif
 #include <mpi.h>
+
+const Foam::Enum
+<
+    Foam::demCoupling::particleCloud::voidFractionRateSource
+>
+Foam::demCoupling::particleCloud::voidFractionRateSourceNames
+({
+    { voidFractionRateSource::snapshot, "snapshot" },
+    { voidFractionRateSource::flux, "flux" },
+});
+
 
 namespace
 {
@@ -218,6 +231,7 @@ Foam::demCoupling::particleCloud::particleCloud
     // The particles' volume from the start, so that time 0 sees it
     updateParticles();
     voidfraction_.oldTime() = voidfraction_;
+    checkParticleSizes();
     lastDemCount_ = exchange_->nTotal();
 
     // The coupling split counts the coupling steps only
@@ -337,6 +351,55 @@ Foam::scalar Foam::demCoupling::particleCloud::maxCellsPerStep() const
         }
     }
     return cbrt(returnReduce(maxCube, maxOp<scalar>()));
+}
+
+
+void Foam::demCoupling::particleCloud::checkParticleSizes() const
+{
+    // The smallest dx/d over the particles in the mesh (dx = cbrt(V) of
+    // the host cell), each counted by its host rank
+    const scalarField& V = mesh_.V();
+    scalar dxOverD = GREAT;
+    forAll(particles_.cell, i)
+    {
+        const label c = particles_.cell[i];
+        if
+        (
+            c >= 0 && particles_.hostProc[i] == Pstream::myProcNo()
+         && particles_.diameter[i] > 0
+        )
+        {
+            dxOverD = min(dxOverD, cbrt(V[c])/particles_.diameter[i]);
+        }
+    }
+    reduce(dxOverD, minOp<scalar>());
+    const fileName dir(sceneMaps::defaultDir());
+    if (dxOverD >= GREAT || !sceneMaps::available(dir))
+    {
+        return;   // no particle in the mesh yet, or no maps to ask
+    }
+    const sceneMaps maps(dir);
+    const word& model = voidFraction_->type();
+    scalar at = -1;
+    const int stable = maps.bounded(model, dxOverD, at);
+    if (stable == 0)
+    {
+        Info<< "Warning: the largest particle against its cell has dx/d = "
+            << dxOverD << " (d " << 1/dxOverD << " of the cell size): the"
+            << " void-fraction model " << model << " went unstable at dx/d"
+            << " = " << at << " in the project's stability map ("
+            << dir/"stabilityMap.dat" << "). Use coarser cells or another"
+            << " model (checkDemScene tells what the scene needs)." << endl;
+    }
+    else if (stable < 0 && at > 0)
+    {
+        Info<< "Warning: the largest particle against its cell has dx/d = "
+            << dxOverD << " (d " << 1/dxOverD << " of the cell size), below"
+            << " the smallest cell size the void-fraction model " << model
+            << " was measured at (dx/d = " << at << ", " << dir << "): its"
+            << " accuracy and stability there are not known (checkDemScene"
+            << " tells what the scene needs)." << endl;
+    }
 }
 
 
@@ -629,6 +692,22 @@ Foam::demCoupling::particleCloud::voidFractionRateFromFlux() const
         }
     }
     return fvc::div(phiSolid);
+}
+
+
+bool Foam::demCoupling::particleCloud::rateFromFlux
+(
+    const dictionary& pimpleDict
+) const
+{
+    const voidFractionRateSource source = inputCheck::selectOrDefault
+    (
+        pimpleDict, "voidFractionRate", voidFractionRateSourceNames,
+        voidFractionRateSource::flux,
+        "snapshot (eps difference of two steps) and flux (div of the solid"
+        " volume flux)"
+    );
+    return source == voidFractionRateSource::flux && active();
 }
 
 

@@ -4,6 +4,7 @@
 #include "sceneCheck.H"
 #include "volFields.H"
 #include "demEngine.H"
+#include "couplingControls.H"
 #include "forceModel.H"
 #include "voidFractionModel.H"
 #include "IOdictionary.H"
@@ -85,145 +86,122 @@ void fluidProperties(const Foam::fvMesh& mesh, scalar& rho, scalar& mu)
 Foam::demCoupling::sceneCheck::sceneCheck
 (
     const fvMesh& mesh,
-    const dictionary& couplingDict,
-    const sceneMaps& maps
+    const sceneMaps& maps,
+    const couplingControls& controls,
+    const voidFractionModel& voidFraction,
+    const PtrList<forceModel>& forces
 )
 :
     mesh_(mesh),
-    couplingDict_(couplingDict),
-    maps_(maps)
+    maps_(maps),
+    controls_(controls),
+    voidFraction_(voidFraction),
+    forces_(forces),
+    rhoF_(0),
+    muF_(0),
+    gMag_(0)
 {}
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
-Foam::label Foam::demCoupling::sceneCheck::run
-(
-    demEngine& engine,
-    const scalar targetErrorPercent,
-    const scalar velocity
-)
+void Foam::demCoupling::sceneCheck::readFluid()
 {
-    using constant::mathematical::pi;
-    failures_.clear();
-    warnings_.clear();
-
-    const Time& runTime = mesh_.time();
-    const word model(couplingDict_.get<word>("voidFraction"));
-    // The settings checked as the solver checks them (unknown names,
-    // missing or out-of-range coefficients stop here, naming the file)
-    voidFractionModel::New(couplingDict_, mesh_);
-    forceModel::NewList(couplingDict_);
-    const word scheme(couplingDict_.getOrDefault<word>("demDrag", "implicit"));
-
-    particleData p;
-    engine.ownedParticles(p);
-    const label n = p.size();
-
-    scalar rhoF = 0, muF = 0;
-    fluidProperties(mesh_, rhoF, muF);
+    fluidProperties(mesh_, rhoF_, muF_);
     const uniformDimensionedVectorField g
     (
         IOobject
         (
-            "g", runTime.constant(), mesh_,
+            "g", mesh_.time().constant(), mesh_,
             IOobject::MUST_READ, IOobject::NO_WRITE, false
         )
     );
-    const scalar gMag = mag(g.value());
+    gMag_ = mag(g.value());
+}
 
-    Info<< nl << "Scene check of " << runTime.path() << nl
-        << "    maps: " << maps_.dir() << " (meshStudy.dat,"
-        << " stability/stabilityMap.dat, stability/dragStability.dat)" << nl
-        << "    fluid the particles sit in: rho " << rhoF << " kg/m3, mu "
-        << muF << " Pa s; voidFraction " << model << ", demDrag " << scheme
-        << nl << endl;
 
-    if (n == 0)
-    {
-        warnings_.append
-        (
-            "the DEM script sets up no particle (it inserts them later):"
-            " sizes, the Rayleigh time and tau_p are not checked"
-        );
-    }
-
+void Foam::demCoupling::sceneCheck::checkSizes
+(
+    const particleData& p,
+    sceneParticles& s
+)
+{
     // Sizes against the cells
     const scalarField& V = mesh_.V();
-    DynamicList<scalar> d, dOverDx, dxOverD, rhoP, dxOf;
-    label outside = 0;
-    for (label i = 0; i < n; ++i)
+    for (label i = 0; i < p.size(); ++i)
     {
         const label c = mesh_.findCell(p.position[i]);
         if (c < 0)
         {
-            ++outside;
+            ++s.outside;
             continue;
         }
         const scalar dx = cbrt(V[c]);
-        d.append(p.diameter[i]);
-        rhoP.append(p.density[i]);
-        dxOf.append(dx);
-        dOverDx.append(p.diameter[i]/dx);
-        dxOverD.append(dx/p.diameter[i]);
+        s.d.append(p.diameter[i]);
+        s.rhoP.append(p.density[i]);
+        s.dx.append(dx);
+        s.dOverDx.append(p.diameter[i]/dx);
+        s.dxOverD.append(dx/p.diameter[i]);
     }
-    const label nIn = d.size();
     scalarList cellSizes(mesh_.nCells());
     forAll(cellSizes, c)
     {
         cellSizes[c] = cbrt(V[c]);
     }
-    const scalar dxMedian = quantile(cellSizes, 0.5);
+    s.dxMedian = quantile(cellSizes, 0.5);
 
-    Info<< "    particles         " << n << " (" << outside
+    Info<< "    particles         " << p.size() << " (" << s.outside
         << " outside the mesh)";
-    if (nIn)
+    if (s.in())
     {
-        Info<< ", d " << fig(quantile(d, 0)) << " .. " << fig(quantile(d, 1))
-            << " m, median " << fig(quantile(d, 0.5)) << " m, density "
-            << fig(quantile(rhoP, 0.5)) << " kg/m3";
+        Info<< ", d " << fig(quantile(s.d, 0)) << " .. "
+            << fig(quantile(s.d, 1)) << " m, median "
+            << fig(quantile(s.d, 0.5)) << " m, density "
+            << fig(quantile(s.rhoP, 0.5)) << " kg/m3";
     }
     Info<< nl << "    cells             " << mesh_.nCells() << ", dx = cbrt(V) "
         << fig(quantile(cellSizes, 0)) << " .. "
-        << fig(quantile(cellSizes, 1)) << " m, median " << fig(dxMedian)
+        << fig(quantile(cellSizes, 1)) << " m, median " << fig(s.dxMedian)
         << " m" << endl;
-    if (outside)
+    if (s.outside)
     {
         warnings_.append
         (
-            std::to_string(outside) + " particle(s) lie outside the mesh"
+            std::to_string(s.outside) + " particle(s) lie outside the mesh"
             " (no fluid force on them)"
         );
     }
 
-    scalar dxdMin = -1, dxdMedian = -1;
-    if (nIn)
+    if (!s.in())
     {
-        dxdMin = quantile(dxOverD, 0);
-        dxdMedian = quantile(dxOverD, 0.5);
-        Info<< "    d/dx              min " << fig(quantile(dOverDx, 0))
-            << ", median " << fig(quantile(dOverDx, 0.5)) << ", max "
-            << fig(quantile(dOverDx, 1)) << " (dx/d " << fig(dxdMin)
-            << " .. " << fig(quantile(dxOverD, 1)) << ")" << endl;
-        if (model == "virtualSphere")
-        {
-            const scalar c =
-                couplingDict_.subDict("virtualSphereCoeffs")
-               .get<scalar>("sizeThreshold");
-            label under = 0;
-            forAll(d, i)
-            {
-                if (d[i] <= c*dxOf[i])
-                {
-                    ++under;
-                }
-            }
-            Info<< "    virtual sphere    " << under << " of " << nIn
-                << " particles at or under its threshold d = " << c
-                << " dx (they take the centre model)" << endl;
-        }
+        return;
     }
+    s.dxdMin = quantile(s.dxOverD, 0);
+    s.dxdMedian = quantile(s.dxOverD, 0.5);
+    Info<< "    d/dx              min " << fig(quantile(s.dOverDx, 0))
+        << ", median " << fig(quantile(s.dOverDx, 0.5)) << ", max "
+        << fig(quantile(s.dOverDx, 1)) << " (dx/d " << fig(s.dxdMin)
+        << " .. " << fig(quantile(s.dxOverD, 1)) << ")" << endl;
+    const scalar c = voidFraction_.sizeThreshold();
+    if (c > 0)
+    {
+        label under = 0;
+        forAll(s.d, i)
+        {
+            if (s.d[i] <= c*s.dx[i])
+            {
+                ++under;
+            }
+        }
+        Info<< "    virtual sphere    " << under << " of " << s.in()
+            << " particles at or under its threshold d = " << c
+            << " dx (they take the centre model)" << endl;
+    }
+}
 
+
+void Foam::demCoupling::sceneCheck::checkDemStep(const demEngine& engine)
+{
     // DEM step against the Rayleigh time
     const scalar dtDem = engine.timeStep();
     scalar dMin = 0, EMin = 0;
@@ -250,15 +228,20 @@ Foam::label Foam::demCoupling::sceneCheck::run
             << " known: no particles or no youngsModulus/poissonsRatio)"
             << endl;
     }
+}
 
-    // The coupling step against the particle response time
+
+Foam::scalar Foam::demCoupling::sceneCheck::longestCouplingStep(bool& bounded)
+{
+    // The coupling step against the particle response time: the longest
+    // step the run may take
+    const Time& runTime = mesh_.time();
     const bool adjustable =
         runTime.controlDict().getOrDefault<bool>("adjustTimeStep", false);
-    // the longest coupling step the run may take
     const scalar maxDeltaT =
         runTime.controlDict().getOrDefault<scalar>("maxDeltaT", GREAT);
-    const scalar dt =
-        adjustable && maxDeltaT < GREAT ? maxDeltaT : runTime.deltaTValue();
+    bounded = adjustable && maxDeltaT < GREAT;
+    const scalar dt = bounded ? maxDeltaT : runTime.deltaTValue();
     if (adjustable && maxDeltaT >= GREAT)
     {
         warnings_.append
@@ -267,192 +250,226 @@ Foam::label Foam::demCoupling::sceneCheck::run
             " unbounded; checked at the first deltaT, " + fig(dt) + " s"
         );
     }
-    if (nIn)
+    return dt;
+}
+
+
+void Foam::demCoupling::sceneCheck::checkCouplingStep
+(
+    const sceneParticles& s,
+    const scalar dt,
+    const bool fromMaxDeltaT
+)
+{
+    List<scalar> tau(s.in());
+    forAll(tau, i)
     {
-        List<scalar> tau(nIn);
-        forAll(tau, i)
+        tau[i] = s.rhoP[i]*sqr(s.d[i])/(18*muF_);
+    }
+    const scalar tauMin = quantile(tau, 0);
+    const word scene("settling");
+    const word& scheme = controls_.demDragName();
+    scalar stable = 0;
+    const scalar blowUp = maps_.dragBlowUp(scheme, scene, stable);
+    Info<< "    coupling step     " << dt << " s"
+        << (fromMaxDeltaT ? " (maxDeltaT)" : "") << " = "
+        << fig(dt/tauMin) << " tau_p of the most responsive particle ("
+        << fig(tauMin) << " s); " << scheme << " DEM drag blew up at "
+        << (blowUp < GREAT ? fig(blowUp) + " tau_p (settling)"
+                           : std::string("no measured dt/tau_p")).c_str()
+        << endl;
+    if (dt/tauMin >= blowUp)
+    {
+        failures_.append
+        (
+            "the coupling step is " + fig(dt/tauMin) + " tau_p: the "
+            + scheme + " DEM drag blew up at " + fig(blowUp)
+            + " tau_p in the measured settling scene"
+            " (etc/sceneMaps/dragStability.dat); the largest step"
+            " measured stable below it is " + fig(stable) + " tau_p = "
+            + fig(stable*tauMin) + " s"
+        );
+    }
+}
+
+
+Foam::scalar Foam::demCoupling::sceneCheck::terminalVelocity
+(
+    const sceneParticles& s,
+    std::string& why
+)
+{
+    using constant::mathematical::pi;
+
+    // The terminal velocity of the median particle, eps = 1, in still
+    // hydrostatic fluid, with the case's force models (buoyancy only if
+    // pressureGradient is one): F(v) = rho_p V_p g
+    particleFluidState state;
+    state.d = quantile(s.d, 0.5);
+    state.rhoP = quantile(s.rhoP, 0.5);
+    state.rhoF = rhoF_;
+    state.muF = muF_;
+    state.eps = 1;
+    state.gradP = vector(0, 0, -rhoF_*gMag_);
+    const scalar weight = state.rhoP*pi/6*pow3(state.d)*gMag_;
+    auto resistance = [&](const scalar speed)
+    {
+        state.Up = vector(0, 0, -speed);
+        scalar F = 0;
+        forAll(forces_, k)
         {
-            tau[i] = rhoP[i]*sqr(d[i])/(18*muF);
+            F += forces_[k].force(state).total(state).z();
         }
-        const scalar tauMin = quantile(tau, 0);
-        const word scene("settling");
-        scalar stable = 0;
-        const scalar blowUp = maps_.dragBlowUp(scheme, scene, stable);
-        Info<< "    coupling step     " << dt << " s"
-            << (adjustable && maxDeltaT < GREAT ? " (maxDeltaT)" : "") << " = "
-            << fig(dt/tauMin) << " tau_p of the most responsive particle ("
-            << fig(tauMin) << " s); " << scheme << " DEM drag blew up at "
-            << (blowUp < GREAT ? fig(blowUp) + " tau_p (settling)"
-                               : std::string("no measured dt/tau_p")).c_str()
-            << endl;
-        if (dt/tauMin >= blowUp)
+        return F;
+    };
+    scalar hi = 1e-3;
+    while (resistance(hi) < weight && hi < 1e4)
+    {
+        hi *= 2;
+    }
+    if (resistance(0) >= weight)
+    {
+        why = " (the median particle floats: no settling velocity)";
+        warnings_.append
+        (
+            "the median particle does not settle in the fluid: the"
+            " particle Courant number is not checked (give -velocity)"
+        );
+        return -1;
+    }
+    if (hi >= 1e4)
+    {
+        warnings_.append
+        (
+            "no terminal velocity below 1e4 m/s with the case's force models"
+            " (no drag?): the particle Courant number is not checked (give"
+            " -velocity)"
+        );
+        return -1;
+    }
+    scalar lo = 0;
+    for (label it = 0; it < 200; ++it)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        (resistance(mid) < weight ? lo : hi) = mid;
+    }
+    why = " (terminal velocity of the median particle)";
+    return 0.5*(lo + hi);
+}
+
+
+void Foam::demCoupling::sceneCheck::checkCourant
+(
+    const sceneParticles& s,
+    const scalar dt,
+    const scalar velocity
+)
+{
+    // Particle Courant number at the expected speed
+    std::string why(" (given)");
+    const scalar v = velocity > 0 ? velocity : terminalVelocity(s, why);
+    if (v <= 0)
+    {
+        return;
+    }
+    const scalar Co = v*dt/s.dxMedian;
+    Info<< "    particle Courant  " << fig(Co) << " at " << fig(v)
+        << " m/s" << why.c_str() << ": cells crossed per coupling step"
+        << endl;
+    if (Co > 1)
+    {
+        warnings_.append
+        (
+            "a particle at " + fig(v) + " m/s crosses " + fig(Co)
+          + " cells per coupling step (the fluid it sees jumps);"
+            " use deltaT at most " + fig(s.dxMedian/v) + " s"
+        );
+    }
+}
+
+
+void Foam::demCoupling::sceneCheck::compareModels
+(
+    const sceneParticles& s,
+    const scalar targetErrorPercent
+)
+{
+    // The void-fraction models at this scene's cell size
+    const word& model = voidFraction_.type();
+    Info<< nl << "    Void-fraction models: expected settling error at"
+        << " the median dx/d " << fig(s.dxdMedian)
+        << ", stability at the smallest " << fig(s.dxdMin) << nl
+        << "      model           expected error   stable (measured at"
+        << " dx/d)   cost vs virtualSphere" << endl;
+    word cheapest;
+    scalar cheapestCost = GREAT;
+    for (const word& m : maps_.models())
+    {
+        bool inRange = true;
+        const scalar err = maps_.expectedError(m, s.dxdMedian, inRange);
+        scalar at = 0;
+        const int ok = maps_.bounded(m, s.dxdMin, at);
+        const scalar cost = maps_.relativeCost(m, s.dxdMedian);
+        std::ostringstream row;
+        row << "    " << (m == model ? "* " : "  ") << std::left
+            << std::setw(16) << m << std::setw(17)
+            << (fig(err, 2) + " %" + (inRange ? "" : " (out of range)"))
+            << std::setw(24)
+            << (std::string(ok == 1 ? "yes" : ok == 0 ? "NO" : "unknown")
+              + " (" + fig(at) + ")")
+            << (cost > 0 ? fig(cost, 2) : std::string("-"));
+        Info<< row.str().c_str() << endl;
+        if (ok != 0 && err <= targetErrorPercent && cost > 0 && cost < cheapestCost)
+        {
+            cheapestCost = cost;
+            cheapest = m;
+        }
+        if (m != model)
+        {
+            continue;
+        }
+        if (ok == 0)
         {
             failures_.append
             (
-                "the coupling step is " + fig(dt/tauMin) + " tau_p: the "
-                + scheme + " DEM drag blew up at " + fig(blowUp)
-                + " tau_p in the measured settling scene"
-                " (docs/stability/dragStability.dat); the largest step"
-                " measured stable below it is " + fig(stable) + " tau_p = "
-                + fig(stable*tauMin) + " s"
+                "voidFraction " + m + ": its stability run failed at"
+                " dx/d = " + fig(at) + " (etc/sceneMaps/stabilityMap.dat),"
+                " and this scene's largest particle has dx/d = "
+              + fig(s.dxdMin)
             );
         }
-
-        // Particle Courant number at the expected speed
-        scalar v = velocity;
-        std::string why(" (given)");
-        if (v <= 0)
+        if (err > targetErrorPercent)
         {
-            // terminal velocity of the median particle, eps = 1, in still
-            // hydrostatic fluid, with the case's force models (buoyancy
-            // only if pressureGradient is one): F(v) = rho_p V_p g
-            PtrList<forceModel> forces(forceModel::NewList(couplingDict_));
-            particleFluidState s;
-            s.d = quantile(d, 0.5);
-            s.rhoP = quantile(rhoP, 0.5);
-            s.rhoF = rhoF;
-            s.muF = muF;
-            s.eps = 1;
-            s.gradP = vector(0, 0, -rhoF*gMag);
-            const scalar weight = s.rhoP*pi/6*pow3(s.d)*gMag;
-            auto resistance = [&](const scalar speed)
-            {
-                s.Up = vector(0, 0, -speed);
-                scalar F = 0;
-                forAll(forces, k)
-                {
-                    F += forces[k].force(s).total(s).z();
-                }
-                return F;
-            };
-            scalar hi = 1e-3;
-            while (resistance(hi) < weight && hi < 1e4)
-            {
-                hi *= 2;
-            }
-            if (resistance(0) >= weight)
-            {
-                why = " (the median particle floats: no settling velocity)";
-                warnings_.append
-                (
-                    "the median particle does not settle in the fluid: the"
-                    " particle Courant number is not checked (give"
-                    " -velocity)"
-                );
-            }
-            else if (hi >= 1e4)
-            {
-                warnings_.append
-                (
-                    "no terminal velocity below 1e4 m/s with the case's"
-                    " force models (no drag?): the particle Courant number"
-                    " is not checked (give -velocity)"
-                );
-            }
-            else
-            {
-                scalar lo = 0;
-                for (label it = 0; it < 200; ++it)
-                {
-                    const scalar mid = 0.5*(lo + hi);
-                    (resistance(mid) < weight ? lo : hi) = mid;
-                }
-                v = 0.5*(lo + hi);
-                why = " (terminal velocity of the median particle)";
-            }
-        }
-        if (v > 0)
-        {
-            const scalar Co = v*dt/dxMedian;
-            Info<< "    particle Courant  " << fig(Co) << " at " << fig(v)
-                << " m/s" << why.c_str() << ": cells crossed per coupling step"
-                << endl;
-            if (Co > 1)
-            {
-                warnings_.append
-                (
-                    "a particle at " + fig(v) + " m/s crosses " + fig(Co)
-                  + " cells per coupling step (the fluid it sees jumps);"
-                    " use deltaT at most " + fig(dxMedian/v) + " s"
-                );
-            }
+            const scalar need = maps_.smallestDxOverD(m, targetErrorPercent);
+            warnings_.append
+            (
+                "voidFraction " + m + ": expected settling error "
+              + fig(err, 2) + " % above the target "
+              + fig(targetErrorPercent, 2) + " %"
+              + (need > 0
+                  ? "; it reaches the target with cells of dx/d >= "
+                    + fig(need) + " (dx >= " + fig(need*quantile(s.d, 0.5))
+                    + " m for the median particle)"
+                  : std::string())
+            );
         }
     }
-
-    // The void-fraction models at this scene's cell size
-    if (nIn)
+    if (!cheapest.empty())
     {
-        Info<< nl << "    Void-fraction models: expected settling error at"
-            << " the median dx/d " << fig(dxdMedian)
-            << ", stability at the smallest " << fig(dxdMin) << nl
-            << "      model           expected error   stable (measured at"
-            << " dx/d)   cost vs virtualSphere" << endl;
-        word cheapest;
-        scalar cheapestCost = GREAT;
-        for (const word& m : maps_.models())
-        {
-            bool inRange = true;
-            const scalar err = maps_.expectedError(m, dxdMedian, inRange);
-            scalar at = 0;
-            const int ok = maps_.bounded(m, dxdMin, at);
-            const scalar cost = maps_.relativeCost(m, dxdMedian);
-            std::ostringstream row;
-            row << "    " << (m == model ? "* " : "  ") << std::left
-                << std::setw(16) << m << std::setw(17)
-                << (fig(err, 2) + " %" + (inRange ? "" : " (out of range)"))
-                << std::setw(24)
-                << (std::string(ok == 1 ? "yes" : ok == 0 ? "NO" : "unknown")
-                  + " (" + fig(at) + ")")
-                << (cost > 0 ? fig(cost, 2) : std::string("-"));
-            Info<< row.str().c_str() << endl;
-            if (ok != 0 && err <= targetErrorPercent && cost > 0 && cost < cheapestCost)
-            {
-                cheapestCost = cost;
-                cheapest = m;
-            }
-            if (m == model)
-            {
-                if (ok == 0)
-                {
-                    failures_.append
-                    (
-                        "voidFraction " + m + ": its stability run failed at"
-                        " dx/d = " + fig(at) + " (docs/stability/"
-                        "stabilityMap.dat), and this scene's largest particle"
-                        " has dx/d = " + fig(dxdMin)
-                    );
-                }
-                if (err > targetErrorPercent)
-                {
-                    const scalar need =
-                        maps_.smallestDxOverD(m, targetErrorPercent);
-                    warnings_.append
-                    (
-                        "voidFraction " + m + ": expected settling error "
-                      + fig(err, 2) + " % above the target "
-                      + fig(targetErrorPercent, 2) + " %"
-                      + (need > 0
-                          ? "; it reaches the target with cells of dx/d >= "
-                            + fig(need) + " (dx >= " + fig(need*quantile(d, 0.5))
-                            + " m for the median particle)"
-                          : std::string())
-                    );
-                }
-            }
-        }
-        if (!cheapest.empty())
-        {
-            Info<< "    cheapest model within " << fig(targetErrorPercent, 2)
-                << " % here: " << cheapest << " (cost "
-                << fig(cheapestCost, 2) << " of the virtual sphere's)" << endl;
-        }
-        else
-        {
-            Info<< "    no model is measured within " << fig(targetErrorPercent, 2)
-                << " % at this cell size" << endl;
-        }
+        Info<< "    cheapest model within " << fig(targetErrorPercent, 2)
+            << " % here: " << cheapest << " (cost "
+            << fig(cheapestCost, 2) << " of the virtual sphere's)" << endl;
     }
+    else
+    {
+        Info<< "    no model is measured within " << fig(targetErrorPercent, 2)
+            << " % at this cell size" << endl;
+    }
+}
 
+
+void Foam::demCoupling::sceneCheck::printVerdict() const
+{
     Info<< nl << "Verdict:" << endl;
     for (const string& s : failures_)
     {
@@ -472,6 +489,53 @@ Foam::label Foam::demCoupling::sceneCheck::run
         Info<< "    ok    no setting in a measured failure region" << endl;
     }
     Info<< endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::demCoupling::sceneCheck::run
+(
+    demEngine& engine,
+    const scalar targetErrorPercent,
+    const scalar velocity
+)
+{
+    failures_.clear();
+    warnings_.clear();
+
+    particleData p;
+    engine.ownedParticles(p);
+    readFluid();
+
+    Info<< nl << "Scene check of " << mesh_.time().path() << nl
+        << "    maps: " << maps_.dir() << " (meshStudy.dat,"
+        << " stabilityMap.dat, dragStability.dat)" << nl
+        << "    fluid the particles sit in: rho " << rhoF_ << " kg/m3, mu "
+        << muF_ << " Pa s; voidFraction " << voidFraction_.type()
+        << ", demDrag " << controls_.demDragName() << nl << endl;
+
+    if (p.size() == 0)
+    {
+        warnings_.append
+        (
+            "the DEM script sets up no particle (it inserts them later):"
+            " sizes, the Rayleigh time and tau_p are not checked"
+        );
+    }
+
+    sceneParticles s;
+    checkSizes(p, s);
+    checkDemStep(engine);
+    bool fromMaxDeltaT = false;
+    const scalar dt = longestCouplingStep(fromMaxDeltaT);
+    if (s.in())
+    {
+        checkCouplingStep(s, dt, fromMaxDeltaT);
+        checkCourant(s, dt, velocity);
+        compareModels(s, targetErrorPercent);
+    }
+    printVerdict();
     return failures_.size();
 }
 

@@ -23,8 +23,9 @@ Foam::List<Foam::List<std::string>> readRows(const Foam::fileName& file)
     {
         FatalErrorInFunction
             << "Cannot read the measured map " << file << Foam::nl
-            << "    checkDemScene reads the project's own tables in docs/"
-            << " (INTERDEMFOAM_DIR, or -maps DIR)" << Foam::exit(Foam::FatalError);
+            << "    The measured maps are the project's own tables in"
+            << " etc/sceneMaps/ (INTERDEMFOAM_DIR; checkDemScene -maps DIR)"
+            << Foam::exit(Foam::FatalError);
     }
     Foam::DynamicList<Foam::List<std::string>> rows;
     std::string line;
@@ -123,7 +124,7 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
         points_[m].append(p);
     }
     // stability map: model dx/d bounded ended nonFinite minEps ...
-    const fileName stability(dir/"stability"/"stabilityMap.dat");
+    const fileName stability(dir/"stabilityMap.dat");
     for (const List<std::string>& r : readRows(stability))
     {
         requireColumns(r, 3, stability);
@@ -142,7 +143,7 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
         }
     }
     // drag stability: scene scheme dt dt/tau error blown
-    const fileName drag(dir/"stability"/"dragStability.dat");
+    const fileName drag(dir/"dragStability.dat");
     for (const List<std::string>& r : readRows(drag))
     {
         requireColumns(r, 6, drag);
@@ -174,7 +175,15 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
 
 Foam::fileName Foam::demCoupling::sceneMaps::defaultDir()
 {
-    return fileName(getEnv("INTERDEMFOAM_DIR"))/"docs";
+    return fileName(getEnv("INTERDEMFOAM_DIR"))/"etc"/"sceneMaps";
+}
+
+
+bool Foam::demCoupling::sceneMaps::available(const fileName& dir)
+{
+    return
+        isFile(dir/"meshStudy.dat") && isFile(dir/"stabilityMap.dat")
+     && isFile(dir/"dragStability.dat");
 }
 
 

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "particleExchange.H"
+#include "inputCheck.H"
+#include "couplingKeywords.H"
 #include "Pstream.H"
 
 namespace Foam
@@ -11,6 +13,12 @@ namespace demCoupling
     defineTypeNameAndDebug(particleExchange, 0);
     defineRunTimeSelectionTable(particleExchange, dictionary);
 }
+}
+
+namespace
+{
+    // The keyword of couplingProperties this family reads
+    const Foam::demCoupling::couplingKeywords::declare keywords({"exchange"});
 }
 
 
@@ -42,13 +50,11 @@ Foam::demCoupling::particleExchange::New
 
     if (!cstrIter.found())
     {
-        FatalIOErrorInLookup
+        inputCheck::unknownModel
         (
-            dict,
-            "exchange",
-            exchangeType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+            dict, "exchange", exchangeType,
+            dictionaryConstructorTablePtr_->sortedToc()
+        );
     }
 
     if (Pstream::parRun())

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "forceModel.H"
+#include "inputCheck.H"
+#include "couplingKeywords.H"
 
 namespace Foam
 {
@@ -10,6 +12,16 @@ namespace demCoupling
     defineTypeNameAndDebug(forceModel, 0);
     defineRunTimeSelectionTable(forceModel, dictionary);
 }
+}
+
+namespace
+{
+    // The keywords of couplingProperties this family reads
+    const Foam::demCoupling::couplingKeywords::declare keywords
+    (
+        {"forces"},
+        &Foam::demCoupling::forceModel::modelNames
+    );
 }
 
 
@@ -30,13 +42,7 @@ Foam::demCoupling::forceModel::New
 
     if (!cstrIter.found())
     {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "forces",
-            name,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+        inputCheck::unknownModel(dict, "forces", name, modelNames());
     }
 
     Info<< "Selecting force model " << name << endl;
@@ -53,6 +59,15 @@ Foam::demCoupling::forceModel::NewList(const dictionary& dict)
 {
     const wordList names(dict.get<wordList>("forces"));
 
+    if (names.empty())
+    {
+        Info<< "Warning: forces () in " << dict.name() << " lists no force"
+            << " model: the particles feel no fluid and the fluid no"
+            << " particle but through the void fraction. List the models"
+            << " the scene needs, e.g. forces ( DiFeliceDrag"
+            << " pressureGradient );" << endl;
+    }
+
     PtrList<forceModel> models(names.size());
     forAll(names, i)
     {
@@ -68,4 +83,10 @@ Foam::demCoupling::forceModel::NewList(const dictionary& dict)
         models.set(i, New(names[i], dict));
     }
     return models;
+}
+
+
+Foam::wordList Foam::demCoupling::forceModel::modelNames()
+{
+    return dictionaryConstructorTablePtr_->sortedToc();
 }

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "momentumCouplingModel.H"
+#include "inputCheck.H"
+#include "couplingKeywords.H"
 
 namespace Foam
 {
@@ -10,6 +12,12 @@ namespace demCoupling
     defineTypeNameAndDebug(momentumCouplingModel, 0);
     defineRunTimeSelectionTable(momentumCouplingModel, dictionary);
 }
+}
+
+namespace
+{
+    // The keyword of couplingProperties this family reads
+    const Foam::demCoupling::couplingKeywords::declare keywords({"momentumCoupling"});
 }
 
 
@@ -34,13 +42,11 @@ Foam::demCoupling::momentumCouplingModel::New
 
     if (!cstrIter.found())
     {
-        FatalIOErrorInLookup
+        inputCheck::unknownModel
         (
-            dict,
-            "momentumCoupling",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+            dict, "momentumCoupling", modelType,
+            dictionaryConstructorTablePtr_->sortedToc()
+        );
     }
 
     Info<< "Momentum coupling: " << modelType << endl;

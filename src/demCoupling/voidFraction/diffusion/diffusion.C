@@ -28,7 +28,7 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     centre(dict, mesh),
     bandwidth_
     (
-        getAllowed<scalar>
+        inputCheck::get<scalar>
         (
             dict.subDict("diffusionCoeffs"), "bandwidth",
             [](const scalar b) { return b > 0; },
@@ -37,7 +37,7 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     ),
     nSteps_
     (
-        getAllowed<label>
+        inputCheck::get<label>
         (
             dict.subDict("diffusionCoeffs"), "nSteps",
             [](const label n) { return n >= 1; },
@@ -46,6 +46,8 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     ),
     solverControls_()
 {
+    inputCheck::keywords(dict.subDict("diffusionCoeffs"), {"bandwidth", "nSteps"});
+
     // The linear solver: fvSolution's solvers.voidFractionSmoothing when
     // the case sets one, else a tight PCG (what is left unsolved is
     // particle volume lost or gained)

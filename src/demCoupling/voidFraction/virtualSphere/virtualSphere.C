@@ -27,7 +27,7 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
     voidFractionModel(dict, mesh),
     diameterRatio_
     (
-        getAllowed<scalar>
+        inputCheck::get<scalar>
         (
             dict.subDict("virtualSphereCoeffs"), "diameterRatio",
             [](const scalar k) { return k >= 1; },
@@ -36,7 +36,7 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
     ),
     sizeThreshold_
     (
-        getAllowed<scalar>
+        inputCheck::get<scalar>
         (
             dict.subDict("virtualSphereCoeffs"), "sizeThreshold",
             [](const scalar c) { return c > 0; },
@@ -50,6 +50,10 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
     binCells_(),
     sphereCells_()
 {
+    inputCheck::keywords
+    (
+        dict.subDict("virtualSphereCoeffs"), {"diameterRatio", "sizeThreshold"}
+    );
     Info<< "    virtual sphere: diameter " << diameterRatio_ << " d for"
         << " particles with d > " << sizeThreshold_ << " dx" << endl;
 

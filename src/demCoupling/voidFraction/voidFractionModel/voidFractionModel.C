@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "voidFractionModel.H"
+#include "couplingKeywords.H"
 
 namespace Foam
 {
@@ -10,6 +11,16 @@ namespace demCoupling
     defineTypeNameAndDebug(voidFractionModel, 0);
     defineRunTimeSelectionTable(voidFractionModel, dictionary);
 }
+}
+
+namespace
+{
+    // The keywords of couplingProperties this family reads
+    const Foam::demCoupling::couplingKeywords::declare keywords
+    (
+        {"voidFraction", "minVoidFraction"},
+        &Foam::demCoupling::voidFractionModel::modelNames
+    );
 }
 
 
@@ -23,7 +34,7 @@ Foam::demCoupling::voidFractionModel::voidFractionModel
     periodic_(mesh),
     minVoidFraction_
     (
-        getAllowed<scalar>
+        inputCheck::get<scalar>
         (
             dict, "minVoidFraction",
             [](const scalar v) { return v > 0 && v < 1; },
@@ -52,18 +63,18 @@ Foam::demCoupling::voidFractionModel::New
 
     if (!cstrIter.found())
     {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "voidFraction",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+        inputCheck::unknownModel(dict, "voidFraction", modelType, modelNames());
     }
 
     Info<< "Selecting void-fraction model " << modelType << endl;
 
     return autoPtr<voidFractionModel>(cstrIter()(dict, mesh));
+}
+
+
+Foam::wordList Foam::demCoupling::voidFractionModel::modelNames()
+{
+    return dictionaryConstructorTablePtr_->sortedToc();
 }
 
 

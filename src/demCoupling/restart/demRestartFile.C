@@ -214,6 +214,18 @@ Foam::demCoupling::demRestartFile::demRestartFile
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
+Foam::fileName Foam::demCoupling::demRestartFile::masterFile
+(
+    const Time& runTime,
+    const word& timeName
+)
+{
+    fileName file(demRestartFile(runTime, timeName).file());
+    Pstream::scatter(file);
+    return file;
+}
+
+
 void Foam::demCoupling::demRestartFile::commit
 (
     const Time& runTime,
