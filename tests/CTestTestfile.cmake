@@ -54,6 +54,12 @@ set_tests_properties(case.settlingExplicit PROPERTIES LABELS "case;coupled" TIME
 add_test(case.couplingInputErrors "bash" "cases/couplingInputErrors.sh")
 set_tests_properties(case.couplingInputErrors PROPERTIES LABELS "case;coupled;input" TIMEOUT 600)
 
+# No input makes the solver crash: 94 mutations of a small coupled case,
+# each ends with exit 0 or a clear error (never a signal, hang or silent
+# abort), as the mutation list says
+add_test(case.inputFuzz "bash" "cases/inputFuzz.sh")
+set_tests_properties(case.inputFuzz PROPERTIES LABELS "case;coupled;input" TIMEOUT 900)
+
 # The voidfraction field of a cell-sized particle bed split by METIS: 2 ranks
 # = serial, particle volume conserved (centre, divided, virtualSphere)
 add_test(case.voidFractionParallel "bash" "cases/voidFractionParallel.sh")

@@ -12,6 +12,12 @@
 #   - an unknown voidFraction / momentumCoupling / force model (the valid
 #     names are listed)
 #   - a restart from a time at which every particle had left (no DEM state)
+#   - a case written before demDrag existed (couple/cfd/force, no demDrag)
+#     runs with explicit drag, says so in one 'DEM drag:' line, and gives
+#     a particle history identical (cmp) to the same case with demDrag
+#     explicit; demDrag implicit with that fix stops naming both
+#   - an error LIGGGHTS reports in a 2-rank run (Error::one, which calls
+#     MPI_Abort) ends with its message, the command and its script line
 #   - and the rest of docs/reliability.md's table of bad inputs (35 checks:
 #     'did you mean' for misspelt keywords, wrong types, ranges, missing
 #     sub-dictionaries, file coupling, a DEM box smaller than the mesh,
@@ -187,6 +193,29 @@ rm -rf 0.000[1-9]*
 for i in $(seq 12000); do echo 'print "the same line"'; done >> DEM/in.liggghts
 expectError repeats12000 "LIGGGHTS wrote the same line more than 10000 times"
 
+# A case written before demDrag existed (couple/cfd/force, no demDrag)
+# runs with explicit drag, says so in one log line, and moves its particle
+# exactly as the same case with demDrag explicit; demDrag implicit with the
+# old fix still stops
+sed -i 's#couple/cfd/force/implicit#couple/cfd/force#' DEM/in.settings
+keepTimes=yes expectWarning oldCase "DEM drag: explicit (the DEM script" \
+    "sets no demDrag"
+[ "$(grep -c '^DEM drag:' log.oldCase)" -eq 1 ] \
+    || fail "oldCase: not one 'DEM drag:' line"
+cp particleHistory.dat particleHistory.oldCase
+rm -rf 0.000[1-9]*
+sed -i 's#couple/cfd/force/implicit#couple/cfd/force#' DEM/in.settings
+echo "demDrag explicit;" >> constant/couplingProperties
+expectWarning explicitSet "DEM drag: explicit"
+cmp -s particleHistory.dat particleHistory.oldCase \
+    || fail "oldCase: the particle history differs from demDrag explicit's"
+[ "$(grep -vc '^#' particleHistory.oldCase)" -ge 3 ] \
+    || fail "oldCase: fewer than 3 rows in particleHistory.dat"
+echo "ok: oldCase moves its particle as demDrag explicit does ($(grep -vc '^#' particleHistory.oldCase) rows identical)"
+sed -i 's#couple/cfd/force/implicit#couple/cfd/force#' DEM/in.settings
+echo "demDrag implicit;" >> constant/couplingProperties
+expectError oldFixImplicit "demDrag implicit" "couple/cfd/force/implicit" "couplingProperties"
+
 # guards that warn and go on, and one that stops
 sed -i 's/^timestep .*/timestep        5e-5/; s/couple_every 10/couple_every 2/' DEM/in.settings
 expectWarning rayleighTime "Rayleigh time" "Use a timestep of at most 20 %"
@@ -237,5 +266,20 @@ rc=$?
 grep -q "non-finite position" log.parallelError || fail "parallel error: no message"
 echo "ok: parallelError (exit $rc after $(( $(date +%s) - start )) s, every rank ended)"
 cp DEM/in.liggghts.good DEM/in.liggghts
+
+# an error of LIGGGHTS itself (Error::one on every rank, which calls
+# MPI_Abort): the run ends with LIGGGHTS's message, the command and its
+# line in the script, not a bare MPI_ABORT
+sed -i 's/^variable *zp .*/variable zp equal z[1]*${nothere}/' DEM/in.settings
+timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 interDemFoam -parallel \
+    > log.parallelLiggghts 2>&1 < /dev/null
+rc=$?
+[ $rc -ne 124 ] && [ $rc -ne 0 ] || fail "parallelLiggghts: hung or succeeded (exit $rc)"
+for pat in "LIGGGHTS stopped with an error" "illegal variable" "DEM/in.settings line"
+do
+    grep -q -- "$pat" log.parallelLiggghts || fail "parallelLiggghts: no '$pat'"
+done
+echo "ok: parallelLiggghts ($(grep -m1 'DEM/in.settings line' log.parallelLiggghts | sed 's/^ *//'))"
+cp DEM/in.settings.good DEM/in.settings
 
 pass "coupled-case input errors are reported clearly"

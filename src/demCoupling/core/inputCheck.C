@@ -100,6 +100,19 @@ void Foam::demCoupling::inputCheck::keywords
 }
 
 
+const Foam::dictionary& Foam::demCoupling::inputCheck::subDict
+(
+    const dictionary& dict,
+    const word& name,
+    const wordList& allowed
+)
+{
+    const dictionary& sub = dict.subDict(name);
+    keywords(sub, allowed);
+    return sub;
+}
+
+
 void Foam::demCoupling::inputCheck::unknownModel
 (
     const dictionary& dict,

@@ -247,6 +247,7 @@ void Foam::demCoupling::demEngine::checkScriptResult
     }
 
     checkParticleProperties(couplingDict);
+    checkMaterial(couplingDict);
 
     // A script without a time-integration fix (nve/sphere, ...) is legal
     // (a bed held in place) but its particles never move
@@ -302,6 +303,46 @@ void Foam::demCoupling::demEngine::checkParticleProperties
                 << " diameter > 0 and a density > 0 (set ... diameter D"
                 << " density RHO, or the insertion's distributions)"
                 << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::demCoupling::demEngine::checkMaterial
+(
+    const dictionary& couplingDict
+) const
+{
+    using namespace LAMMPS_NS;
+
+    // The Hertz contact's stiffness per atom type (where the script gives
+    // one): E > 0 and -1 < nu <= 0.5, or the contact and the Rayleigh
+    // time divide by zero
+    const int nTypes = lmp_->atom->ntypes;
+    Fix* E = lmp_->modify->find_fix_property
+    (
+        "youngsModulus", "property/global", "peratomtype", nTypes, 0,
+        "interDemFoam", false
+    );
+    Fix* nu = lmp_->modify->find_fix_property
+    (
+        "poissonsRatio", "property/global", "peratomtype", nTypes, 0,
+        "interDemFoam", false
+    );
+    for (int t = 0; t < nTypes; ++t)
+    {
+        const double Et =
+            E ? static_cast<FixPropertyGlobal*>(E)->compute_vector(t) : 1;
+        const double nut =
+            nu ? static_cast<FixPropertyGlobal*>(nu)->compute_vector(t) : 0;
+        if (!(Et > 0) || !std::isfinite(Et) || !(nut > -1 && nut <= 0.5))
+        {
+            FatalIOErrorInFunction(couplingDict)
+                << "The DEM script " << script_ << " gives atom type "
+                << t + 1 << " youngsModulus " << Et << " Pa and"
+                << " poissonsRatio " << nut << ": youngsModulus must be > 0"
+                << " and poissonsRatio in (-1, 0.5] (fix ... property/global"
+                << " youngsModulus peratomtype ...)" << exit(FatalIOError);
         }
     }
 }

@@ -51,8 +51,10 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     eddyTime_(1),
     seed_(0)
 {
-    const dictionary& coeffs = dict.subDict("velocityFluctuation");
-    inputCheck::keywords(coeffs, {"intensity", "eddyTime", "seed"});
+    const dictionary& coeffs = inputCheck::subDict
+    (
+        dict, "velocityFluctuation", {"intensity", "eddyTime", "seed"}
+    );
     intensity_ = inputCheck::get<scalar>
     (
         coeffs, "intensity", &inputCheck::nonNegative, ">= 0"

@@ -30,7 +30,11 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     (
         inputCheck::get<scalar>
         (
-            dict.subDict("diffusionCoeffs"), "bandwidth",
+            inputCheck::subDict
+            (
+                dict, "diffusionCoeffs", {"bandwidth", "nSteps"}
+            ),
+            "bandwidth",
             [](const scalar b) { return b > 0; },
             "> 0 (the width, in m, over which a particle's volume spreads)"
         )
@@ -46,8 +50,6 @@ Foam::demCoupling::voidFractionModels::diffusion::diffusion
     ),
     solverControls_()
 {
-    inputCheck::keywords(dict.subDict("diffusionCoeffs"), {"bandwidth", "nSteps"});
-
     // The linear solver: fvSolution's solvers.voidFractionSmoothing when
     // the case sets one, else a tight PCG (what is left unsolved is
     // particle volume lost or gained)

@@ -29,7 +29,11 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
     (
         inputCheck::get<scalar>
         (
-            dict.subDict("virtualSphereCoeffs"), "diameterRatio",
+            inputCheck::subDict
+            (
+                dict, "virtualSphereCoeffs", {"diameterRatio", "sizeThreshold"}
+            ),
+            "diameterRatio",
             [](const scalar k) { return k >= 1; },
             ">= 1 (virtual-sphere diameter / particle diameter; seed: 4)"
         )
@@ -50,10 +54,6 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
     binCells_(),
     sphereCells_()
 {
-    inputCheck::keywords
-    (
-        dict.subDict("virtualSphereCoeffs"), {"diameterRatio", "sizeThreshold"}
-    );
     Info<< "    virtual sphere: diameter " << diameterRatio_ << " d for"
         << " particles with d > " << sizeThreshold_ << " dx" << endl;
 
