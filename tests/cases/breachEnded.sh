@@ -3,10 +3,11 @@
 # Copyright (C) 2026 the interDemFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # The landslide dam's run-length rule (tutorials/interDemFoam/
-# landslideDamBreach/damBreachAnalysis.py ended, which Allrun calls after
-# each piece of a run): a run goes on while, over the last 20 s, the dam
-# height changed by 5 mm or more or the total energy [E] by 0.02 or more
-# (grains still leave the dam), and stops at the longest run (Allrun
+# landslideDamBreach/damBreachAnalysis.py ended, the rule in its package's
+# damBreach/ended.py, which Allrun calls after each piece of a run): a run
+# goes on while, over the last 20 s, the dam height changed by 5 mm or
+# more or the total energy [E] by 0.02 or more (grains still leave the
+# dam), and stops at the longest run (Allrun
 # -maxTime, default 200 s at small scale) saying NOT ENDED. Seconds, no
 # solver: the rule is applied to synthetic LIGGGHTS dumps (every 0.5 s, g
 # straight down) of one light crest grain (1 g) whose top is the dam height
@@ -30,7 +31,8 @@
 #   - the same on 2 ranks (processor0/98 and processor0/100 marked, dumps
 #     empty from 98 s, end 100 s): ended, naming the earliest, 98 (not the
 #     first in text order, 100).
-# Negative controls: the checks fail on copies of the rule with both
+# Negative controls: the checks fail on copies of the analysis whose rule
+# (damBreach/ended.py) is changed: with both
 # tolerances ignored (every run "ended"), with the [E] tolerance ignored
 # (grains leaving do not count), with the longest run ignored (a run
 # never stops; for a run shorter than the window too), with the emptied
@@ -41,7 +43,8 @@
 . "$(dirname "$0")/caseFunctions.sh"
 
 analysis="$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreachAnalysis.py"
-[ -f "$analysis" ] || fail "no $analysis"
+ruleModule="$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreach/ended.py"
+[ -f "$analysis" ] && [ -f "$ruleModule" ] || fail "no $analysis or $ruleModule"
 rm -rf "$runDir/breachEnded"
 mkdir -p "$runDir/breachEnded"
 cd "$runDir/breachEnded" || fail "cannot enter $runDir/breachEnded"
@@ -147,17 +150,29 @@ ruleChecks()
     short 10 0 'NOT ENDED'
 }
 
+# mutant <name> <sed expression>: a copy of the analysis (damBreachAnalysis.py
+# and its package damBreach/) in <name>/, its rule damBreach/ended.py
+# changed by the expression
+mutant()
+{
+    rm -rf "$1" && mkdir -p "$1/damBreach" && cp "$analysis" "$1"/ \
+        && cp "$(dirname "$ruleModule")"/*.py "$1"/damBreach/ \
+        || fail "negative control $1: cannot copy the analysis"
+    sed -i "$2" "$1"/damBreach/ended.py
+    cmp -s "$ruleModule" "$1"/damBreach/ended.py \
+        && fail "negative control $1: the rule's line was not found"
+}
+
 # negative controls: the rule broken in five ways must fail the checks
 rule="level = state\['height_change'\] < tolerance and state\['energy_change'\] < energy_tolerance"
-sed "s/$rule/level = True/" "$analysis" > noTolerance.py
-sed "s/$rule/level = state['height_change'] < tolerance/" "$analysis" > noEnergy.py
-sed "s/state\['t_end'\] >= max_time - 1e-6/False/" "$analysis" > noLongestRun.py
-sed "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/" "$analysis" > noEmptied.py
-sed 's/key=time_of)/)/' "$analysis" > textOrder.py
+mutant noTolerance "s/$rule/level = True/"
+mutant noEnergy "s/$rule/level = state['height_change'] < tolerance/"
+mutant noLongestRun "s/state\['t_end'\] >= max_time - 1e-6/False/"
+mutant noEmptied "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/"
+mutant textOrder 's/key=time_of)/)/'
 for broken in noTolerance noEnergy noLongestRun noEmptied textOrder
 do
-    cmp -s "$analysis" $broken.py && fail "negative control $broken: the rule's line was not found"
-    msg=$( (ruleChecks $broken.py) 2>&1 ) \
+    msg=$( (ruleChecks $broken/damBreachAnalysis.py) 2>&1 ) \
         && fail "the checks pass with the rule broken ($broken)"
     echo "negative control $broken: ${msg##*FAIL: }"
 done

@@ -3,7 +3,8 @@
 # Copyright (C) 2026 the interDemFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 # Where a stopped landslide-dam run goes on (tutorials/interDemFoam/
-# landslideDamBreach/damBreachResume.py, which `Allrun -resume` calls): a
+# landslideDamBreach/damBreachResume.py, the rule in its package's
+# damBreach/resume.py, which `Allrun -resume` calls): a
 # run is a chain of pieces (to 60 s, then 20 s each, a restart from the
 # write at the previous piece's end); it goes on from the end of its last
 # complete piece (log ending in `End`), and what the interrupted piece
@@ -34,7 +35,8 @@
 #     "from 8 -";
 #   - Allrun.run without demDt: exit 1 naming Allrun.run and demDt; no
 #     Allrun.run and no wallTime: exit 1 naming Allrun.run.
-# Negative controls: the checks fail on copies of the module that keep the
+# Negative controls: the checks fail on copies of the module (damBreach/
+# resume.py, with damBreachResume.py and the package beside it) that keep the
 # dumps past the restart step, that restart from the latest write (not the
 # last complete piece's end) and that take a log without End as complete.
 # Reference: the folders Allrun leaves, laid out by hand. Measured: every
@@ -42,7 +44,8 @@
 . "$(dirname "$0")/caseFunctions.sh"
 
 module="$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreachResume.py"
-[ -f "$module" ] || fail "no $module"
+resumeModule="$INTERDEMFOAM_TUTORIALS/landslideDamBreach/damBreach/resume.py"
+[ -f "$module" ] && [ -f "$resumeModule" ] || fail "no $module or $resumeModule"
 rm -rf "$runDir/breachResume"
 mkdir -p "$runDir/breachResume"
 cd "$runDir/breachResume" || fail "cannot enter $runDir/breachResume"
@@ -200,15 +203,25 @@ resumeChecks()
     return 0
 }
 
+# mutant <name> <sed expression>: a copy of damBreachResume.py and its
+# package damBreach/ in <name>/, damBreach/resume.py changed by the expression
+mutant()
+{
+    rm -rf "$1" && mkdir -p "$1/damBreach" && cp "$module" "$1"/ \
+        && cp "$(dirname "$resumeModule")"/*.py "$1"/damBreach/ \
+        || fail "negative control $1: cannot copy the module"
+    sed -i "$2" "$1"/damBreach/resume.py
+    cmp -s "$resumeModule" "$1"/damBreach/resume.py \
+        && fail "negative control $1: the line to break was not found"
+}
+
 # negative controls: the module broken in three ways must fail the checks
-sed 's/if m and int(m.group(1)) > step0:/if False:/' "$module" > keepDumps.py
-sed 's/    return "from", done\[1\], done\[0\], settings/    return "from", max(time_folders(case)), done[0], settings/' \
-    "$module" > latestWrite.py
-sed 's/return any(line.strip() == "End" for line in f)/return True/' "$module" > noEnd.py
+mutant keepDumps 's/if m and int(m.group(1)) > step0:/if False:/'
+mutant latestWrite 's/    return "from", done\[1\], done\[0\], settings/    return "from", max(time_folders(case)), done[0], settings/'
+mutant noEnd 's/return any(line.strip() == "End" for line in f)/return True/'
 for broken in keepDumps latestWrite noEnd
 do
-    cmp -s "$module" $broken.py && fail "negative control $broken: the line to break was not found"
-    msg=$( (resumeChecks $broken.py) 2>&1 ) \
+    msg=$( (resumeChecks $broken/damBreachResume.py) 2>&1 ) \
         && fail "the checks pass with the module broken ($broken)"
     echo "negative control $broken: ${msg##*FAIL: }"
 done

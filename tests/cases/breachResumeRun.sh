@@ -19,9 +19,9 @@
 #     and the summary identical to the run without a stop;
 #   - resuming that finished case again prints "finished", runs no solver
 #     and leaves its solver log (md5) and summary unchanged.
-# Negative control: with the resume module changed to go on from the
-# latest write (3 s) instead of the last complete piece's end, a run
-# killed the same way and resumed must give a different summary.
+# Negative control: with the resume module (damBreach/resume.py) changed to
+# go on from the latest write (3 s) instead of the last complete piece's
+# end, a run killed the same way and resumed must give a different summary.
 # (Stopped pieces, cleaning, 2 ranks and bad settings are checked on
 # synthetic case folders by case.breachResume.)
 # Reference: the same run without a stop. Measured: the resumed runs'
@@ -30,10 +30,11 @@
 
 copyTutorial landslideDamBreach breachResumeRun
 rm -f DEM/dam.*.restart                        # pour the dam too
-# pieces of seconds: first piece 2 s, then 2 s each, writes every 1 s
-sed -i 's/defaultLake=0.15; defaultEnd=60; maxEnd=200 ;;/defaultLake=0.15; defaultEnd=2; maxEnd=200 ;;/; s/^pieceLength=20 /pieceLength=2 /' Allrun
-grep -q "defaultEnd=2; maxEnd=200" Allrun && grep -q "^pieceLength=2 " Allrun \
-    || fail "could not shorten the pieces in Allrun (the lines to change were not found)"
+# pieces of seconds: first piece 2 s, then 2 s each, writes every 1 s (the
+# run's lengths per scale: Allrun's scripts/options.py)
+sed -i "s/defaultLake='0.15', defaultEnd='60', maxEnd='200'/defaultLake='0.15', defaultEnd='2', maxEnd='200'/; s/^PIECE_LENGTH = '20' /PIECE_LENGTH = '2' /" scripts/options.py
+grep -q "defaultEnd='2', maxEnd='200'" scripts/options.py && grep -q "^PIECE_LENGTH = '2' " scripts/options.py \
+    || fail "could not shorten the pieces in scripts/options.py (the lines to change were not found)"
 foamDictionary -entry writeInterval -set 1 system/controlDict > /dev/null \
     || fail "could not set writeInterval in system/controlDict"
 options="-scenario C4 -lakeLevel 0.27 -maxTime 6"
@@ -99,9 +100,9 @@ resumeCheck()
 # negative control: going on from the latest write (3 s)
 runStopped latestWrite 3.5
 [ -d C4.small.latestWrite/3 ] || fail "latestWrite: stopped before its write of 3 s"
-cp damBreachResume.py damBreachResume.py.orig
-sed -i 's/    return "from", done\[1\], done\[0\], settings/    return "from", max(time_folders(case)), done[0], settings/' damBreachResume.py
-cmp -s damBreachResume.py damBreachResume.py.orig \
+cp damBreach/resume.py damBreach/resume.py.orig
+sed -i 's/    return "from", done\[1\], done\[0\], settings/    return "from", max(time_folders(case)), done[0], settings/' damBreach/resume.py
+cmp -s damBreach/resume.py damBreach/resume.py.orig \
     && fail "negative control latestWrite: the line to break was not found"
 msg=$( (resumeCheck latestWrite "from 3 -") 2>&1 ) \
     && fail "the resumed summary equals the run's without a stop with the module broken (latestWrite)"
@@ -110,7 +111,7 @@ case "$msg" in
     *"summary differs"*) ;;
     *) fail "negative control latestWrite fails, but not for the summary: $msg" ;;
 esac
-mv damBreachResume.py.orig damBreachResume.py
+mv damBreach/resume.py.orig damBreach/resume.py
 
 runStopped first 1.5
 resumeCheck first start

@@ -129,26 +129,29 @@ matrixChecks()
 
 analysisDir="$INTERDEMFOAM_TUTORIALS/landslideDamBreach"
 
-# breakAnalysis <dir> <sed expression> <the line it leaves>: a copy of the
-# analysis in <dir> with one guard of damBreachMatrix.py removed
+# breakAnalysis <dir> <module> <sed expression> <the line it leaves>: a copy
+# of the analysis (damBreachAnalysis.py and its package damBreach/) in <dir>
+# with one guard of damBreach/<module>.py removed
 breakAnalysis()
 {
-    rm -rf "$1" && mkdir -p "$1" && cp "$analysisDir"/damBreach*.py "$1"/ \
+    rm -rf "$1" && mkdir -p "$1/damBreach" && cp "$analysisDir"/damBreachAnalysis.py "$1"/ \
+        && cp "$analysisDir"/damBreach/*.py "$1"/damBreach/ \
         || fail "negative control: cannot copy the analysis to $1"
-    sed -i "$2" "$1"/damBreachMatrix.py
-    grep -Fqx -- "$3" "$1"/damBreachMatrix.py \
+    sed -i "$3" "$1"/damBreach/$2.py
+    grep -Fqx -- "$4" "$1"/damBreach/$2.py \
         || fail "negative control: cannot remove the guard in $1"
 }
 
-# rankingCheck <dir>: the rankings of P6, P7, P9 and P11 (decreasing()) fail
-# when a value is missing or NaN, and hold on a complete decreasing list
+# rankingCheck <dir>: the rankings of P6, P7, P9 and P11 (damBreach/
+# findings.py's decreasing()) fail when a value is missing or NaN, and hold
+# on a complete decreasing list
 rankingCheck()
 {
     local wrong
     wrong=$(/usr/bin/python3 - "$1" <<'EOF'
 import math, sys
 sys.path.insert(0, sys.argv[1])
-import damBreachMatrix as m
+from damBreach import findings as m
 cases = [([0.2, 0.15, 0.1], True), ([0.2, 0.25], False), ([0.2], False),
          ([0.2, math.nan, 0.1], False), ([math.nan, 0.2, 0.1], False),
          ([0.2, None, 0.1], False)]
@@ -173,7 +176,7 @@ rateShapeCheck()
 import sys
 import numpy as np
 sys.path.insert(0, sys.argv[1])
-import damBreachMatrix as m
+from damBreach import findings as m
 t = np.arange(0.0, 100.25, 0.5)
 def series(spikes):
     rate = np.zeros_like(t)
@@ -196,18 +199,18 @@ EOF
     [ -z "$wrong" ] || fail "rate_peaks judges wrongly: $(echo $wrong)"
 }
 
-breakAnalysis ignoreMissing 's/^\(    missing = \).*/\1[]/' '    missing = []'
+breakAnalysis ignoreMissing matrix 's/^\(    missing = \).*/\1[]/' '    missing = []'
 mustFail matrixChecks "$PWD/ignoreMissing" "the missing runs ignored" \
     "findings count reads"
-breakAnalysis plainHolds "s/^\(        holds = \).*/\1'holds'/" \
+breakAnalysis plainHolds matrix "s/^\(        holds = \).*/\1'holds'/" \
     "        holds = 'holds'"
 mustFail matrixChecks "$PWD/plainHolds" "plain holds on one run" \
     "a finding holds on one run of eight"
 dropped='    v = [x for x in values if x is not None and not np.isnan(x)]'
-breakAnalysis dropMissing "s/^    v = list(values)\$/$dropped/" "$dropped"
+breakAnalysis dropMissing findings "s/^    v = list(values)\$/$dropped/" "$dropped"
 mustFail rankingCheck "$PWD/dropMissing" "missing values dropped" \
     "decreasing() ranks wrongly"
-breakAnalysis failureFades 's/^    if failed:$/    if False:/' '    if False:'
+breakAnalysis failureFades findings 's/^    if failed:$/    if False:/' '    if False:'
 mustFail rateShapeCheck "$PWD/failureFades" "a complete failure judged by fading" \
     "rate_peaks judges wrongly"
 matrixChecks "$PWD"

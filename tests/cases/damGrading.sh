@@ -90,7 +90,7 @@ cp -r DEM/in.* old/DEM/
 sed -i 's/^fix             ins all insert\/pack .*/fix ins all insert\/pack seed 49979687 distributiontemplate pdd insert_every 2000 overlapcheck yes all_in yes volumefraction_region 0.62 region dam/;
         s/^run             1$/run 30000/' old/DEM/in.buildDam
 grep -q 'volumefraction_region 0.62 region dam' old/DEM/in.buildDam || fail "negative control: old pour not set"
-cp -r Allrun damBreachAnalysis.py old/
+cp -r Allrun scripts damBreachAnalysis.py damBreach old/
 (cd old && mkdir -p results && ./Allrun -buildDam C > log.Allrun 2>&1) \
     && { cat old/log.Allrun; fail "negative control: Allrun accepts the old largest-first pour"; }
 grep -q "GRADING CHECK FAILED" old/log.Allrun || { cat old/log.Allrun; fail "negative control: no grading message"; }

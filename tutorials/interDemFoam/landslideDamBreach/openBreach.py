@@ -22,19 +22,25 @@
 # Also runs under pvbatch (BREACH_SCREENSHOT=file.png saves a picture).
 import glob
 import json
-import math
 import os
 import re
 import sys
 
-from paraview import servermanager
-
-from paraview.simple import (Clip, ColorBy, Contour, Glyph,
-                             GetActiveViewOrCreate, GetAnimationScene,
-                             GetColorTransferFunction, OpenDataFile,
-                             GetScalarBar, MergeBlocks, OpenFOAMReader,
-                             RenameSource, Render,
+from paraview.simple import (ColorBy, GetActiveViewOrCreate,
+                             GetAnimationScene, GetColorTransferFunction,
+                             OpenDataFile, RenameSource, Render,
                              SaveScreenshot, Show, Hide, ExtractBlock)
+
+# the helpers shared with the other tutorials' ParaView scripts:
+# bin/pvhelpers.py ($INTERDEMFOAM_DIR's, else three folders above this
+# script; ParaView's --script may run it without __file__: then the case's
+# parent folder is the tutorial)
+_here = os.path.dirname(os.path.abspath(__file__)) if '__file__' in globals() \
+    else os.path.join(os.getcwd(), '..')
+sys.path.insert(0, os.path.join(
+    os.environ.get('INTERDEMFOAM_DIR') or os.path.join(_here, '..', '..', '..'),
+    'bin'))
+import pvhelpers as pv  # noqa: E402
 
 
 def find_case():
@@ -51,21 +57,9 @@ def find_case():
     return os.path.abspath(max(runs, key=os.path.getmtime))
 
 
-# the DEM step of a case: renderBreach.py's (this script's folder; ParaView's
-# --script may run it without __file__: then the case's parent folder, or the
-# tutorial of $INTERDEMFOAM_TUTORIALS)
-for _d in ([os.path.dirname(os.path.abspath(__file__))] if '__file__' in globals() else []) \
-        + [os.path.join(os.getcwd(), '..'),
-           os.path.join(os.environ.get('INTERDEMFOAM_TUTORIALS', '.'), 'landslideDamBreach')]:
-    if os.path.isfile(os.path.join(_d, 'renderBreach.py')):
-        sys.path.insert(0, os.path.abspath(_d))
-        break
-from renderBreach import dem_step  # noqa: E402
-
-
 def series(case, stem):
     """post/<stem>.vtk.series: the DEM's VTK dumps on the CFD time line"""
-    dt = dem_step(case)
+    dt = pv.dem_step(case)
     files = []
     for p in glob.glob(os.path.join(case, 'post', stem + '_*.vtk')):
         m = re.match(re.escape(stem) + r'_(\d+)\.vtk$', os.path.basename(p))
@@ -81,31 +75,14 @@ def series(case, stem):
     return out
 
 
-def colours(name, points, top):
-    f = GetColorTransferFunction(name)
-    f.VectorMode = 'Magnitude'
-    f.ColorSpace = 'RGB'
-    f.RGBPoints = [v for x, r, g, b in points for v in (x*top, r, g, b)]
-    f.AutomaticRescaleRangeMode = 'Never'
-    f.RescaleTransferFunction(0.0, top)
-    return f
-
-
 case = find_case()
-foam = os.path.join(case, 'case.foam')
-if not os.path.exists(foam):
-    open(foam, 'w').close()
+foam = pv.foam_file(case)
 view = GetActiveViewOrCreate('RenderView')
 view.OrientationAxesVisibility = 1
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+pv.white_background(view)
 
-fluid = OpenFOAMReader(FileName=foam, SkipZeroTime=0)
-fluid.MeshRegions = ['internalMesh', 'patch/bed']
-fluid.CellArrays = ['U', 'alpha.water', 'voidfraction']
+fluid = pv.open_fluid(foam, ['internalMesh', 'patch/bed'],
+                      ['U', 'alpha.water', 'voidfraction'])
 RenameSource('fluid', fluid)
 t0 = min(fluid.TimestepValues)
 fluid.UpdatePipeline(t0)
@@ -118,64 +95,39 @@ bedPatch.Selectors = ['/Root/patch/bed']
 RenameSource('bed', bedPatch)
 bd = Show(bedPatch, view)
 bd.ColorArrayName = ['POINTS', '']
-bd.DiffuseColor = bd.AmbientColor = [0.45, 0.45, 0.45]
+bd.DiffuseColor = bd.AmbientColor = list(pv.BED_COLOUR)
 
-water = Clip(Input=mesh)
-water.ClipType = 'Scalar'
-water.Scalars = ['POINTS', 'alpha.water']
-water.Value = 0.5
-water.Invert = 0
+water = pv.water_clip(mesh)
 RenameSource('water', water)
 wd = Show(water, view)
 ColorBy(wd, ('POINTS', 'U', 'Magnitude'))
-WATER = [(0.0, 0.80, 0.90, 0.98), (0.4, 0.42, 0.68, 0.88),
-         (0.75, 0.13, 0.40, 0.72), (1.0, 0.03, 0.15, 0.42)]
-wd.LookupTable = colours('U', WATER, 1.5)
+wd.LookupTable = pv.lut('U', pv.WATER_MAP, 0, 1.5)
 wd.Opacity = 0.35
 wd.SetScalarBarVisibility(view, True)
 
-surface = Contour(Input=mesh)
-surface.ContourBy = ['POINTS', 'alpha.water']
-surface.Isosurfaces = [0.5]
+surface = pv.free_surface(mesh)
 RenameSource('surface', surface)
 sd = Show(surface, view)
 sd.ColorArrayName = ['POINTS', '']
-sd.DiffuseColor = sd.AmbientColor = [0.03, 0.15, 0.42]
+sd.DiffuseColor = sd.AmbientColor = pv.SURFACE_COLOUR
 sd.Opacity = 0.5
 
-cloud = OpenFOAMReader(FileName=foam, SkipZeroTime=0)
-cloud.MeshRegions = ['lagrangian/demParticles']
-cloud.UpdatePipeline(t0)
-cloud.LagrangianArrays = ['d', 'U', 'F', 'omega', 'id', 'type']
+cloud = pv.open_cloud(foam, t0, ['d', 'U', 'F', 'omega', 'id', 'type'])
 RenameSource('demParticles', cloud)
-grains = Glyph(Input=cloud, GlyphType='Sphere')
-grains.ScaleArray = ['POINTS', 'd']
-grains.ScaleFactor = 1.0           # sphere of diameter d
-grains.OrientationArray = ['POINTS', 'No orientation array']
-grains.GlyphMode = 'All Points'
-grains.GlyphType.ThetaResolution = 16
-grains.GlyphType.PhiResolution = 12
+grains = pv.sphere_glyphs(cloud)
 RenameSource('grains', grains)
 gd = Show(grains, view)
 ColorBy(gd, ('POINTS', 'U', 'Magnitude'))
 # the particle U has its own map: sand at rest, red when fast
-gd.LookupTable = colours('grainU', [(0.0, 0.80, 0.70, 0.52),
-                                    (0.3, 0.96, 0.60, 0.16),
-                                    (0.65, 0.84, 0.14, 0.10),
-                                    (1.0, 0.45, 0.02, 0.10)], 0.5)
+gd.LookupTable = pv.lut('grainU', pv.GRAIN_MAP, 0, 0.5)
 gd.SetScalarBarVisibility(view, True)
-colours('U', WATER, 1.5)           # ColorBy of the grains rescaled it
+pv.lut('U', pv.WATER_MAP, 0, 1.5)  # ColorBy of the grains rescaled it
 for lut, title, pos in ((gd.LookupTable, 'grain speed (m/s)', [0.40, 0.05]),
                         (wd.LookupTable, 'water speed (m/s)', [0.85, 0.05])):
-    bar = GetScalarBar(lut, view)
-    bar.Title, bar.ComponentTitle = title, ''
-    bar.WindowLocation = 'Any Location'
-    bar.Position = pos
-    bar.Orientation = 'Horizontal'
-    bar.ScalarBarLength = 0.25
-    bar.TitleFontSize = bar.LabelFontSize = 12
-    bar.RangeLabelFormat = '%-#.2g'
-    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    pv.scalar_bar(lut, view, title, WindowLocation='Any Location',
+                  Position=pos, Orientation='Horizontal',
+                  ScalarBarLength=0.25, TitleFontSize=12, LabelFontSize=12,
+                  RangeLabelFormat='%-#.2g')
 
 chains = series(case, 'forceChain')
 if chains:
@@ -194,13 +146,8 @@ if chains:
 # look across the flume, up against gravity, framed on the dam (after a
 # first render: that one resets the camera)
 Render(view)
-text = open(os.path.join(case, 'constant', 'g')).read()
-g = [float(v) for v in re.search(r'value\s*\(([^)]*)\)', text).group(1).split()]
-n = math.sqrt(sum(v*v for v in g))
-up = [-v/n for v in g]
-merged = MergeBlocks(Input=cloud)
-merged.UpdatePipeline(t0)
-data = servermanager.Fetch(merged)
+up = pv.gravity_up(case)
+data = pv.merged(cloud, t0)
 if data.GetNumberOfPoints():
     b = data.GetBounds()
 else:

@@ -38,31 +38,26 @@ The view is the flume's side (looking across it), turned so that up is the
 real world's up (against constant/g): the bed falls 5 degrees downstream.
 """
 import argparse
-import glob
-import math
 import os
-import re
 import shutil
 import subprocess
 import sys
 import tempfile
 import time as clock
 
-from paraview.simple import (Box, Calculator, Clip, ColorBy, Contour,
-                             CreateRenderView, Delete, Glyph,
-                             GetColorTransferFunction, GetScalarBar,
-                             LegacyVTKReader, OpenFOAMReader, Render,
+from paraview.simple import (Box, Calculator, ColorBy, LegacyVTKReader,
                              SaveScreenshot, Show, Slice, Text)
-from paraview import servermanager
 
-# Colour maps, shared by ParaView and the matplotlib colour bars:
-# (position 0..1, r, g, b). Grains: sand at rest, orange, red, dark red when
-# fast. Water: light to deep blue.
-GRAIN_MAP = [(0.0, 0.80, 0.70, 0.52), (0.3, 0.96, 0.60, 0.16),
-             (0.65, 0.84, 0.14, 0.10), (1.0, 0.45, 0.02, 0.10)]
-WATER_MAP = [(0.0, 0.80, 0.90, 0.98), (0.4, 0.42, 0.68, 0.88),
-             (0.75, 0.13, 0.40, 0.72), (1.0, 0.03, 0.15, 0.42)]
-BED_COLOUR = (0.45, 0.45, 0.45)
+# the helpers shared with the other tutorials' ParaView scripts (opening
+# the case, the cloud, the colour maps GRAIN_MAP and WATER_MAP, ...):
+# bin/pvhelpers.py
+sys.path.insert(0, os.path.join(
+    os.environ.get('INTERDEMFOAM_DIR')
+    or os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..'),
+    'bin'))
+import pvhelpers as pv  # noqa: E402
+from pvhelpers import GRAIN_MAP, WATER_MAP  # noqa: E402
+
 PHASES = ['start', 'seepage', 'overtopping', 'backward erosion',
           'head-cut erosion', 'end']
 
@@ -97,26 +92,6 @@ def time_dirs(case):
     return out
 
 
-def gravity(case):
-    text = open(os.path.join(case, 'constant', 'g')).read()
-    m = re.search(r'value\s*\(\s*([^\s)]+)\s+([^\s)]+)\s+([^\s)]+)\s*\)', text)
-    g = [float(v) for v in m.groups()]
-    n = math.sqrt(sum(v*v for v in g))
-    return [v/n for v in g]
-
-
-def dem_step(case):
-    """DEM time step (s) from DEM/in.case (written by Allrun); no default:
-    the dump steps are times only with the step the run used"""
-    f = os.path.join(case, 'DEM', 'in.case')
-    try:
-        text = open(f).read()
-        return float(re.search(r'variable\s+demDt\s+index\s+(\S+)', text).group(1))
-    except (OSError, AttributeError, ValueError):
-        raise SystemExit('%s: no "variable demDt index <s>" (written by Allrun):'
-                         ' cannot tell the time of the DEM dumps' % f)
-
-
 def summary(case):
     out = {}
     try:
@@ -137,12 +112,6 @@ def breach_table(case):
         return [float(r[0]) for r in rows], [float(r[1]) for r in rows]
     except (OSError, ValueError, IndexError):
         return None
-
-
-def evenly(times, n=6):
-    if len(times) <= n:
-        return list(times)
-    return [times[int(round(i*(len(times) - 1)/(n - 1)))] for i in range(n)]
 
 
 def choose_times(case, times):
@@ -193,121 +162,76 @@ def choose_times(case, times):
             why = 'the phases fall on too few write times'
     print('renderBreach: phase times not available (%s): evenly spaced '
           'write times instead' % why)
-    return [(w, 't = %g s (evenly spaced)' % w) for w in evenly(times)]
+    return [(w, 't = %g s (evenly spaced)' % w) for w in pv.evenly(times, 6)]
 
 
 # ---------------------------------------------------------------------------
 # ParaView pipeline
-def rgb_points(cmap, top):
-    pts = []
-    for x, r, g, b in cmap:
-        pts += [x*top, r, g, b]
-    return pts
-
-
-def lut(name, cmap, top, title):
-    f = GetColorTransferFunction(name)
-    f.VectorMode = 'Magnitude'
-    f.RGBPoints = rgb_points(cmap, top)
-    f.ColorSpace = 'RGB'
-    f.AutomaticRescaleRangeMode = 'Never'
-    f.RescaleTransferFunction(0.0, top)
-    f.AboveRangeColor = list(cmap[-1][1:])
-    f.UseAboveRangeColor = 1
-    return f
-
-
-def point_bounds(source, t):
-    """Bounds of a source's points at time t (None if it has none)"""
-    from paraview.simple import MergeBlocks
-    m = MergeBlocks(Input=source)
-    m.UpdatePipeline(t)
-    data = servermanager.Fetch(m)
-    Delete(m)
-    n = data.GetNumberOfPoints()
-    if not n:
-        return None
-    pts = [data.GetPoint(i) for i in range(n)]
-    return [f(p[k] for p in pts) for k in range(3) for f in (min, max)]
-
-
 class Scene:
     def __init__(self, case, args, size):
         self.case = case
         self.args = args
-        foam = os.path.join(case, 'case.foam')
-        if not os.path.exists(foam):
-            open(foam, 'w').close()
-        self.fluid = OpenFOAMReader(FileName=foam, SkipZeroTime=0)
-        self.fluid.SkipZeroTime = 0
-        self.fluid.MeshRegions = ['internalMesh']
-        self.fluid.CellArrays = ['U', 'alpha.water']
+        foam = pv.foam_file(case)
+        self.fluid = pv.open_fluid(foam, ['internalMesh'], ['U', 'alpha.water'])
         self.fluid.UpdatePipelineInformation()
         self.fluid.UpdatePipeline(min(self.fluid.TimestepValues))
         b = self.fluid.GetDataInformation().GetBounds()
         self.bounds = b
-        self.cloud = OpenFOAMReader(FileName=foam, SkipZeroTime=0)
-        self.cloud.MeshRegions = ['lagrangian/demParticles']
-        self.cloud.UpdatePipeline(min(self.fluid.TimestepValues))
-        self.cloud.LagrangianArrays = ['d', 'U']
+        self.cloud = pv.open_cloud(foam, min(self.fluid.TimestepValues),
+                                   ['d', 'U'])
         self.dirs = time_dirs(case)
-        self.dt = dem_step(case)
+        self.dt = pv.dem_step(case)
         self.vtkGrains = {}
 
-        v = CreateRenderView()
-        v.ViewSize = list(size)
-        v.OrientationAxesVisibility = 0
-        v.Background = [1, 1, 1]
-        try:
-            v.UseColorPaletteForBackground = 0
-        except AttributeError:
-            pass
-        v.CameraParallelProjection = 1
+        v = pv.white_view(list(size))
         # never at a time without the cloud: the reader would drop the
         # lagrangian region from its selection
         v.ViewTime = min(self.fluid.TimestepValues)
         self.view = v
 
-        # water: the back plane of the flume, where alpha.water > 0.5
+        self.show_water(b, v, args)
+        self.show_bed(b, v)
+        # grains from the cloud, glyphs sized by d
+        self.grainLut = pv.lut('grainSpeed', GRAIN_MAP, 0, args.grainMax,
+                               above=True)
+        self.cloudGlyph = self.glyph(self.cloud)
+        self.cloudDisplay = self.show_grains(self.cloudGlyph)
+        self.vtkDisplay = None
+        self.show_labels(v)
+        self.frame_camera()
+
+    def show_water(self, b, v, args):
+        """The water on the back plane of the flume, where alpha.water >
+        0.5, coloured by its speed, and its surface."""
         y = b[3] - 1e-3*(b[3] - b[2])
         sl = Slice(Input=self.fluid)
         sl.SliceType = 'Plane'
         sl.SliceType.Origin = [0, y, 0]
         sl.SliceType.Normal = [0, 1, 0]
-        water = Clip(Input=sl)
-        water.ClipType = 'Scalar'
-        water.Scalars = ['POINTS', 'alpha.water']
-        water.Value = 0.5
-        water.Invert = 0
-        self.waterLut = lut('waterSpeed', WATER_MAP, args.waterMax,
-                            'water |U| (m/s)')
+        water = pv.water_clip(sl)
+        self.waterLut = pv.lut('waterSpeed', WATER_MAP, 0, args.waterMax,
+                               above=True)
         wd = Show(water, v)
         ColorBy(wd, ('POINTS', 'U', 'Magnitude'))
         wd.LookupTable = self.waterLut
         wd.Opacity = 0.85
         wd.Ambient, wd.Diffuse = 1.0, 0.0     # the map's own colours
-        surf = Contour(Input=sl)
-        surf.ContourBy = ['POINTS', 'alpha.water']
-        surf.Isosurfaces = [0.5]
-        sd = Show(surf, v)
+        sd = Show(pv.free_surface(sl), v)
         sd.ColorArrayName = ['POINTS', '']
-        sd.AmbientColor = sd.DiffuseColor = [0.03, 0.15, 0.42]
+        sd.AmbientColor = sd.DiffuseColor = pv.SURFACE_COLOUR
         sd.LineWidth = 2.5
         self.waterDisplay, self.surfDisplay = wd, sd
 
-        # the bed: a slab under z = 0 along the whole flume
+    def show_bed(self, b, v):
+        """The bed: a slab under z = 0 along the whole flume."""
         bed = Box(XLength=b[1] - b[0], YLength=b[3] - b[2], ZLength=0.04,
                   Center=[0.5*(b[0] + b[1]), 0.5*(b[2] + b[3]), -0.02])
         bd = Show(bed, v)
-        bd.AmbientColor = bd.DiffuseColor = list(BED_COLOUR)
+        bd.AmbientColor = bd.DiffuseColor = list(pv.BED_COLOUR)
 
-        # grains from the cloud, glyphs sized by d
-        self.grainLut = lut('grainSpeed', GRAIN_MAP, args.grainMax,
-                            'grain |U| (m/s)')
-        self.cloudGlyph = self.glyph(self.cloud)
-        self.cloudDisplay = self.show_grains(self.cloudGlyph)
-        self.vtkDisplay = None
-
+    def show_labels(self, v):
+        """The time label (upper left) and the two colour bars (hidden
+        until render asks for them)."""
         self.text = Text(Text='')
         td = Show(self.text, v)
         td.WindowLocation = 'Upper Left Corner'
@@ -317,32 +241,15 @@ class Scene:
         self.bars = []
         for f, loc, title in ((self.grainLut, [0.40, 0.66], 'grain speed (m/s)'),
                               (self.waterLut, [0.70, 0.66], 'water speed (m/s)')):
-            sb = GetScalarBar(f, v)
-            sb.Title = title
-            sb.ComponentTitle = ''
-            sb.Orientation = 'Horizontal'
-            sb.WindowLocation = 'Any Location'
-            sb.Position = loc
-            sb.ScalarBarLength = 0.26
-            sb.ScalarBarThickness = 12
-            sb.TitleColor = sb.LabelColor = [0, 0, 0]
-            sb.TitleFontSize = 16
-            sb.LabelFontSize = 14
-            sb.AddRangeLabels = 1
-            sb.RangeLabelFormat = '%-#.1f'
-            sb.DrawTickLabels = 0
-            self.bars.append(sb)
-        self.frame_camera()
+            self.bars.append(pv.scalar_bar(
+                f, v, title, Orientation='Horizontal',
+                WindowLocation='Any Location', Position=loc,
+                ScalarBarLength=0.26, ScalarBarThickness=12,
+                TitleFontSize=16, LabelFontSize=14, AddRangeLabels=1,
+                RangeLabelFormat='%-#.1f', DrawTickLabels=0))
 
     def glyph(self, source):
-        gl = Glyph(Input=source, GlyphType='Sphere')
-        gl.ScaleArray = ['POINTS', 'd']
-        gl.ScaleFactor = 1.0            # sphere of diameter 1 x d
-        gl.OrientationArray = ['POINTS', 'No orientation array']
-        gl.GlyphMode = 'All Points'
-        gl.GlyphType.ThetaResolution = 14
-        gl.GlyphType.PhiResolution = 10
-        return gl
+        return pv.sphere_glyphs(source, theta=14, phi=10)
 
     def show_grains(self, gl):
         d = Show(gl, self.view)
@@ -386,15 +293,14 @@ class Scene:
             if self.grains_at(t):
                 src = self.cloud if self.cloudDisplay.Visibility \
                     else self.vtkDisplay.Input
-                gb = point_bounds(src, t)
+                gb = pv.point_bounds(src, t)
                 break
         if gb is None:
             gb = self.bounds
         x0 = gb[0] - 0.25*(gb[1] - gb[0])
         x1 = gb[1] + 0.30*(gb[1] - gb[0])
         top = max(gb[5], 0.1)*1.25           # room for the overtopping flow
-        g = gravity(self.case)
-        up = [-g[0], -g[1], -g[2]]           # real world's up, flume frame
+        up = pv.gravity_up(self.case)        # real world's up, flume frame
         right = [up[2], 0.0, -up[0]]         # along the flume, in the view
         # the box x0..x1 by bed (-0.04)..top, seen along y: its extent on
         # the screen's axes
@@ -432,12 +338,8 @@ class Scene:
 # ---------------------------------------------------------------------------
 def compose(frames, out, args):
     """The panel: 3 x 2 frames, their labels, the two colour bars"""
-    import matplotlib
-    matplotlib.use('Agg')
+    plt = pv.pyplot()
     import matplotlib.image as mpimg
-    import matplotlib.pyplot as plt
-    from matplotlib.colors import LinearSegmentedColormap, Normalize
-    from matplotlib.cm import ScalarMappable
 
     imgs = [mpimg.imread(f) for f, _ in frames]
     h, w = imgs[0].shape[:2]
@@ -459,13 +361,8 @@ def compose(frames, out, args):
     for k, (cmap, top_, title) in enumerate((
             (GRAIN_MAP, args.grainMax, 'grain speed |U| (m/s)'),
             (WATER_MAP, args.waterMax, 'water speed |U| (m/s)'))):
-        cm = LinearSegmentedColormap.from_list(
-            title, [(x, (r, g, b)) for x, r, g, b in cmap])
-        cax = fig.add_axes([(gap + k*(fw + gap) + 1.2)/W, 0.62/H, 5.0/W,
-                            0.2/H])
-        cb = fig.colorbar(ScalarMappable(Normalize(0, top_), cm), cax=cax,
-                          orientation='horizontal', extend='max')
-        cb.set_label(title, fontsize=11)
+        pv.colour_bar(fig, [(gap + k*(fw + gap) + 1.2)/W, 0.62/H, 5.0/W,
+                            0.2/H], cmap, 0, top_, title, 11, extend='max')
     fig.text(0.5, 1 - 0.3/H, 'Landslide dam breach, %s: grains at their true '
              'size, water on the flume\'s back plane (up: against gravity)'
              % os.path.basename(os.path.abspath(args.case)), fontsize=14,

@@ -8,23 +8,20 @@ their true diameter coloured by speed, and the fluid volume fraction
 
     pvrender renderBed.py CASE [--frames 3] [--out bed.png]
 
-CASE: fixedBed.<law> or fluidize.<law>. The drawing is the
-singleParticleSettling tutorial's renderSettling.py (same options) with the
-whole domain in view and the voidfraction field.
+CASE: fixedBed.<law> or fluidize.<law>. The drawing is bin/pvhelpers.py's
+side view (the singleParticleSettling tutorial's renderSettling.py, same
+options) with the whole domain in view and the voidfraction field.
 """
 import os
 import sys
 
-here = os.path.dirname(os.path.abspath(__file__))
-for d in (os.path.join(os.environ.get('INTERDEMFOAM_TUTORIALS', ''),
-                       'singleParticleSettling'),
-          os.path.join(here, '..', 'singleParticleSettling')):
-    if os.path.exists(os.path.join(d, 'renderSettling.py')):
-        sys.path.insert(0, d)
-        break
-import renderSettling  # noqa: E402
+sys.path.insert(0, os.path.join(
+    os.environ.get('INTERDEMFOAM_DIR')
+    or os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..'),
+    'bin'))
+import pvhelpers as pv  # noqa: E402
 
-renderSettling.main(defaults={'window': 0.0, 'field': 'voidfraction',
-                              'frames': 3, 'speedMax': 0.05,
-                              'voidMin': 0.3, 'out': 'bed.png'},
-                    title='Packed bed: grains and fluid volume fraction')
+pv.side_view_main(defaults={'window': 0.0, 'field': 'voidfraction',
+                            'frames': 3, 'speedMax': 0.05,
+                            'voidMin': 0.3, 'out': 'bed.png'},
+                  title='Packed bed: grains and fluid volume fraction')

@@ -1,9 +1,8 @@
-#!/usr/bin/env python3
 # interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
 # Copyright (C) 2026 the interDemFoam authors
 # SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 """The Shields number on the downstream face during overtopping, measured
-from a run (damBreachAnalysis.py shields OUT CASE...), to place the
+from a run (damBreachAnalysis.py shields OUT SCALE CASE...), to place the
 flagship on the bedload chart of docs/erosion.md.
 
 At every write time from overtopping on:
@@ -25,7 +24,6 @@ Writes OUT/shields.<scale>.dat (one row per case: the median over the
 overtopping of each time's median and 90th percentile over the face,
 median depth, face angle) and CASE/shields.dat (one row per time).
 """
-import glob
 import math
 import os
 import re
@@ -34,7 +32,8 @@ import sys
 
 import numpy as np
 
-import damBreachAnalysis as dba
+from .dumps import (BIN, dump_files, profile_edges, read_dump,
+                    read_gravity, surface_profile)
 
 RHO, RHOS = 1000.0, 2650.0
 MIN_DEPTH = 0.001          # m: a face bin with less water is dry
@@ -83,22 +82,47 @@ def d50_of(p):
     return d[order][np.searchsorted(m, 0.5*m[-1])]
 
 
+def face_shields(zb, alpha, C, dz, col, flume, d50):
+    """theta, water depth and face angle of each wet bin of the downstream
+    face of the granular surface zb at one time (alpha: the cells'
+    alpha.water, C their centres, col their bin along the flume)."""
+    z = C[:, 2]
+    crest = int(np.argmax(zb))
+    slope = np.gradient(zb, BIN)
+    theta, depth, angle = [], [], []
+    for i in range(crest + 1, len(zb)):
+        if zb[i] <= 0:
+            break
+        if slope[i] > -math.tan(math.radians(FACE_ANGLE)):
+            continue
+        cells = col == i
+        above = np.clip((z[cells] + dz/2 - zb[i])/dz, 0.0, 1.0)
+        n_across = len(np.unique(np.round(C[cells, 1], 6)))
+        h = np.sum(alpha[cells]*above)*dz/n_across
+        if h < MIN_DEPTH:
+            continue
+        beta = math.atan(-slope[i]) + flume
+        theta.append(RHO*h*math.sin(beta)/((RHOS - RHO)*d50))
+        depth.append(h)
+        angle.append(math.degrees(beta))
+    return theta, depth, angle
+
+
 def case_shields(case):
     t_over = summary_value(case, 'overtopping from t [s]')
     if t_over is None or t_over < 0:
         return None
-    g = dba.read_gravity(case)
+    g = read_gravity(case)
     flume = math.atan2(g[0], -g[2])              # bed slope, rad
     C = cell_centres(case)
     x, z = C[:, 0], C[:, 2]
     zs = np.unique(np.round(z, 6))
     dz = np.min(np.diff(zs))
-    dumps = dba.dump_files(case, 'particles')
+    dumps = dump_files(case, 'particles')
     dump_t = np.array([t for t, _ in dumps])
-    edges = np.arange(0.0, dba.FLUME_LENGTH + dba.BIN/2, dba.BIN)
-    centres = 0.5*(edges[1:] + edges[:-1])
+    edges = profile_edges()
     col = np.digitize(x, edges) - 1
-    d50 = d50_of(dba.read_dump(dumps[0][1]))
+    d50 = d50_of(read_dump(dumps[0][1]))
     rows = []
     times = sorted(float(d) for d in os.listdir(case)
                    if re.fullmatch(r'\d+(\.\d+)?', d) and float(d) >= t_over)
@@ -108,28 +132,11 @@ def case_shields(case):
         if not os.path.isfile(f):
             continue
         alpha = read_internal(f, 1)
-        p = dba.read_dump(dumps[int(np.argmin(abs(dump_t - t)))][1])
+        p = read_dump(dumps[int(np.argmin(abs(dump_t - t)))][1])
         if p.size == 0:
             continue
-        zb = dba.surface_profile(p, edges)
-        crest = int(np.argmax(zb))
-        slope = np.gradient(zb, dba.BIN)
-        theta, depth, angle = [], [], []
-        for i in range(crest + 1, len(zb)):
-            if zb[i] <= 0:
-                break
-            if slope[i] > -math.tan(math.radians(FACE_ANGLE)):
-                continue
-            cells = col == i
-            above = np.clip((z[cells] + dz/2 - zb[i])/dz, 0.0, 1.0)
-            n_across = len(np.unique(np.round(C[cells, 1], 6)))
-            h = np.sum(alpha[cells]*above)*dz/n_across
-            if h < MIN_DEPTH:
-                continue
-            beta = math.atan(-slope[i]) + flume
-            theta.append(RHO*h*math.sin(beta)/((RHOS - RHO)*d50))
-            depth.append(h)
-            angle.append(math.degrees(beta))
+        zb = surface_profile(p, edges)
+        theta, depth, angle = face_shields(zb, alpha, C, dz, col, flume, d50)
         if theta:
             rows.append([t, len(theta), np.median(theta),
                          np.percentile(theta, 90), np.median(depth),

@@ -1,0 +1,63 @@
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+"""The command line of damBreachAnalysis.py (its docstring is the usage):
+one function per command, each calling the module that does the job."""
+import argparse
+import sys
+
+from . import coarseness, compare, dam, deposit, ended, matrix, shields, summary
+
+
+def grading_command(args):
+    ap = argparse.ArgumentParser(prog='damBreachAnalysis.py grading')
+    ap.add_argument('build')
+    ap.add_argument('--out')
+    ap.add_argument('--grains')
+    ap.add_argument('--scale')
+    a = ap.parse_args(args)
+    return 0 if dam.grading(a.build, a.out, a.grains, a.scale) else 1
+
+
+def ended_command(args):
+    ap = argparse.ArgumentParser(prog='damBreachAnalysis.py ended')
+    ap.add_argument('case')
+    ap.add_argument('--window', type=float, default=ended.ENDED_WINDOW)
+    ap.add_argument('--tolerance', type=float, default=ended.ENDED_HEIGHT)
+    ap.add_argument('--energyTolerance', type=float,
+                    default=ended.LEVEL_ENERGY)
+    ap.add_argument('--maxTime', type=float, default=200.0)
+    a = ap.parse_args(args)
+    return 0 if ended.ended(a.case, a.window, a.tolerance, a.maxTime,
+                            a.energyTolerance) else 1
+
+
+def deposit_command(args):
+    ap = argparse.ArgumentParser(prog='damBreachAnalysis.py deposit')
+    ap.add_argument('cases', nargs='+')
+    ap.add_argument('--every', type=float, default=20.0)
+    a = ap.parse_args(args)
+    deposit.deposit(a.cases, a.every)
+
+
+# command: (the fewest arguments after it, what runs it)
+COMMANDS = {
+    'grading': (1, grading_command),
+    'ended': (1, ended_command),
+    'matrix': (3, lambda a: matrix.main(a[0], a[1], a[2:])),
+    'coarseness': (3, lambda a: coarseness.coarseness(a[0], a[1], a[2:])),
+    'shields': (3, lambda a: shields.main(a[0], a[1], a[2:])),
+    'deposit': (1, deposit_command),
+    'compare': (2, lambda a: compare.compare(a[0], a[1:])),
+}
+
+
+def main(argv, usage):
+    """Run the command of argv (sys.argv); its exit status (None: 0).
+    A single argument is a case to analyse; anything else prints usage."""
+    if len(argv) >= 2 and argv[1] in COMMANDS \
+            and len(argv) - 2 >= COMMANDS[argv[1]][0]:
+        return COMMANDS[argv[1]][1](argv[2:])
+    if len(argv) == 2:
+        return summary.analyse(argv[1])
+    sys.exit(usage)

@@ -1,0 +1,172 @@
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+"""How coarse can the scene be (coarseness.sh; damBreachAnalysis.py
+coarseness DIR SCALE CASE...): residual height and overtopping time of
+each variant of C2 and F2 against the CPU time of its run,
+DIR/coarseness.<scale>.dat and .png."""
+import os
+
+from .figures import pyplot
+from .runs import cpu_time
+from .summary import read_summary
+
+
+VARIANTS = {
+    '': 'tutorial (0.1 m slice, 50 mm cells, virtual sphere, no lift)',
+    'dry': 'lake filled from a dry bed',
+    'dryCo045': 'lake filled from a dry bed, maxCo 0.45: its spread',
+    'Fdry': 'lake filled from a dry bed',
+    'smooth': 'smooth bed (Table 3 grain-wall friction)',
+    'w02': 'slice 0.2 m wide',
+    'divided': 'divided void fraction',
+    'centre': 'centre void fraction',
+    'lift': 'Saffman + Magnus lift',
+    'Fcoarse': 'coarser grading (15-40 mm)',
+    'cell25': '25 mm cells',
+    'semiCo1': 'semi-implicit MULES (MULESCorr yes), maxCo 1',
+    'semiCo2': 'semi-implicit MULES (MULESCorr yes), maxCo 2',
+    'semiCo2final': 'semi-implicit MULES, maxCo 2, rerun with the drag base',
+    'ranks2': 'the tutorial on 2 MPI ranks (round-off spread; CPU of one rank)',
+    'co045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
+    'Fcentre': 'centre void fraction',
+    'Fco045': 'the tutorial at maxCo 0.45 (steps 10 % shorter): the spread',
+    'Flift': 'Saffman + Magnus lift',
+    'cellPoint': 'fluid velocity at the grain centre (fluidVelocity cellPoint)',
+    'FcellPoint': 'fluid velocity at the grain centre (fluidVelocity cellPoint)',
+    'fluct': 'turbulent fluctuations (velocityFluctuation 0.75, 0.2 s)',
+    'fluct06': 'turbulent fluctuations (velocityFluctuation 0.6, 0.2 s)',
+}
+
+
+EARLIER = ' [earlier run: no case on disk]'
+
+
+def label_points(ax, points, fontsize=7):
+    """Name each point (text, x, y, marker size in points) beside it,
+    trying a few offsets and taking the first whose label box (estimated
+    from its length) overlaps neither an earlier label nor another point's
+    marker, so crowded points stay legible (a leader line where moved)."""
+    ax.figure.canvas.draw()                      # the final axis limits
+    to_px = ax.transData.transform
+    scale = ax.figure.dpi/72.0                   # points to pixels
+    centres = [to_px((x, y)) for _, x, y, _ in points]
+    radii = [(ms/2 + 1)*scale for _, _, _, ms in points]
+    # (side, dy in points): right or left of the marker, at five heights
+    offsets = [(1, 3), (1, -10), (-1, 3), (-1, -10), (1, 12), (1, -19),
+               (-1, 12), (-1, -19), (1, 21), (1, -28), (-1, 21), (-1, -28)]
+    placed = []
+
+    def box(i, side, dy, w, h):
+        c = centres[i]
+        x0 = c[0] + radii[i] if side > 0 else c[0] - radii[i] - w
+        y0 = c[1] + dy*scale
+        return x0, y0, x0 + w, y0 + h
+
+    def clear(b, own):
+        for c in placed:
+            if b[0] < c[2] and c[0] < b[2] and b[1] < c[3] and c[1] < b[3]:
+                return False
+        return not any(b[0] - r < c[0] < b[2] + r and b[1] - r < c[1] < b[3] + r
+                       for k, (c, r) in enumerate(zip(centres, radii))
+                       if k != own)
+
+    for i in sorted(range(len(points)), key=lambda k: -centres[k][1]):
+        text, x, y, _ = points[i]
+        w, h = 0.6*fontsize*scale*len(text), fontsize*scale
+        side, dy = next((o for o in offsets if clear(box(i, *o, w, h), i)),
+                        offsets[0])
+        placed.append(box(i, side, dy, w, h))
+        ax.annotate(text, (x, y), fontsize=fontsize,
+                    xytext=(side*radii[i]/scale, dy),
+                    textcoords='offset points',
+                    ha='left' if side > 0 else 'right',
+                    arrowprops=None if (side, dy) == offsets[0] else
+                    dict(arrowstyle='-', lw=0.5, color='0.5',
+                         shrinkA=0, shrinkB=3))
+
+
+def earlier_rows(path, measured):
+    """The rows of an existing chart file whose variant is not among those
+    measured now (its case is not on this disk): kept, their description
+    marked, so that rerunning one variant does not drop the others."""
+    kept = []
+    if not os.path.isfile(path):
+        return kept
+    for line in open(path):
+        if line.startswith('#') or not line.strip():
+            continue
+        w = line.split()
+        if len(w) < 7 or (w[0], w[1]) in measured:
+            continue
+        description = line.split(None, 6)[6].rstrip('\n')
+        if not description.endswith(EARLIER):
+            description += EARLIER
+        kept.append((w[0], w[1], description, float(w[2]), float(w[3]),
+                     float(w[4]), float(w[5])))
+        print('coarseness: %s %s kept from %s (its case is not on disk)'
+              % (w[0], w[1], path))
+    return kept
+
+
+def coarseness_rows(cases):
+    """(scenario, variant, description, residual H, overtopping time, end
+    time, CPU time) of each case."""
+    rows = []
+    for case in cases:
+        parts = os.path.basename(os.path.abspath(case)).split('.')
+        scenario, tag = parts[0], '.'.join(parts[2:])
+        s = read_summary(case)
+        rows.append((scenario, tag or 'tutorial', VARIANTS.get(tag, tag),
+                     s['residual dam height (last 10 % of the run) [m]'],
+                     s['overtopping from t [s] (-1: none)'],
+                     s['end time [s]'], cpu_time(case)))
+    return rows
+
+
+def coarseness_chart(rows, path):
+    """Residual height and overtopping time against CPU time, one point
+    per row (a star: the tutorial; open: an earlier run)."""
+    plt = pyplot()
+    fig, ax = plt.subplots(1, 2, figsize=(14, 6))
+    labels = ([], [])                # (text, x, y, marker size) per panel
+    for r in rows:
+        colour = 'tab:blue' if r[0] == 'C2' else 'tab:red'
+        marker = '*' if r[1] == 'tutorial' else 'o'
+        size = 16 if r[1] == 'tutorial' else 7
+        face = 'none' if r[2].endswith(EARLIER) else colour
+        for k, y in ((0, 1000*r[3]), (1, r[4])):
+            ax[k].plot(r[6]/60, y, marker, color=colour, mfc=face, ms=size)
+            labels[k].append(('%s %s' % (r[0], r[1]), r[6]/60, y, size))
+    for k in (0, 1):
+        ax[k].margins(x=0.15, y=0.08)
+    ax[0].set(xlabel='CPU time of the run [min]',
+              ylabel='residual dam height [mm]',
+              title='Residual height against cost (star: the tutorial)')
+    ax[1].set(xlabel='CPU time of the run [min]',
+              ylabel='overtopping time [s] (-1: none)',
+              title='Overtopping time against cost (blue C2, red F2; '
+                    'open: earlier run)')
+    fig.tight_layout()
+    for k in (0, 1):                 # after the layout: the final positions
+        label_points(ax[k], labels[k])
+    fig.savefig(path, dpi=110)
+
+
+def coarseness(out, scale, cases):
+    """Residual height and overtopping time of each variant against its
+    wall time: coarseness.<scale>.dat and .png in out."""
+    rows = coarseness_rows(cases)
+    path = os.path.join(out, 'coarseness.%s.dat' % scale)
+    rows += earlier_rows(path, set((r[0], r[1]) for r in rows))
+    with open(path, 'w') as f:
+        f.write('# How coarse can the scene be: variants of C2 and F2, %s '
+                'scale (coarseness.sh)\n# scenario variant Hres_m '
+                't_overtop_s end_s cpu_s  description\n' % scale)
+        for r in rows:
+            f.write('%-4s %-9s %.4f %.1f %.0f %.0f  %s\n'
+                    % (r[0], r[1], r[3], r[4], r[5], r[6], r[2]))
+    print(open(path).read())
+    coarseness_chart(rows, os.path.join(out, 'coarseness.%s.png' % scale))
+    print('Written: %s/coarseness.%s.dat, .png' % (out, scale))
+    return 0

@@ -1,0 +1,55 @@
+# interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+# Copyright (C) 2026 the interDemFoam authors
+# SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+# The analysis (sourced by Allrun; the analysis itself is the damBreach/
+# package, its command line damBreachAnalysis.py): one run's tables, plots
+# and pictures (analyseCase), several runs side by side and, with all
+# eight, the matrix, the findings, Figs. 8-11 and the Shields numbers
+# (analyseTogether).
+
+# The case $dir: its tables and plots, then its pictures (ParaView, never
+# fatal)
+analyseCase()
+{
+# Analysis and plots
+/usr/bin/python3 damBreachAnalysis.py "$dir" 2>&1 | tee "$dir"/log.damBreachAnalysis
+[ "${PIPESTATUS[0]}" -eq 0 ] \
+    || { echo "Allrun: analysis failed: see $dir/log.damBreachAnalysis"; return 1; }
+echo "Allrun: results in $dir/damBreach.png, profiles.png, damBreach.dat, damBreach.summary"
+
+# Pictures (ParaView): breach.png (six phases, seed Fig. 6), breach.gif;
+# skipped with a message when ParaView is missing, never fatal
+if command -v pvrender > /dev/null 2>&1
+then
+    pvrender renderBreach.py "$dir" > "$dir"/log.renderBreach 2>&1
+    case $? in
+        0) echo "Allrun: pictures in $dir/breach.png, breach.gif" ;;
+        3) head -n 1 "$dir"/log.renderBreach ;;
+        *) echo "Allrun: renderBreach.py failed (the run is fine): see $dir/log.renderBreach" ;;
+    esac
+else
+    echo "Allrun: no pvrender on PATH (. etc/bashrc): no pictures"
+fi
+}
+
+# The runs $dirs of the scenarios $scenarios side by side
+# (compare.<scale>[.<tag>].png/.txt); with all eight the matrix, the
+# findings, Figs. 8-11 and the Shields numbers in results/ (a variant's in
+# results/<tag>/)
+analyseTogether()
+{
+/usr/bin/python3 damBreachAnalysis.py compare compare.$scale${tag:+.$tag} $dirs \
+    || { echo "Allrun: comparison failed"; exit 1; }
+echo "Allrun: side by side in compare.$scale${tag:+.$tag}.png, compare.$scale${tag:+.$tag}.txt"
+if [ "$(echo $scenarios | tr ' ' '\n' | sort | tr '\n' ' ')" = "C1 C2 C3 C4 F1 F2 F3 F4 " ]
+then
+    # a variant's matrix in results/<tag>/, beside the tutorial's own
+    resultsDir=results${tag:+/$tag}
+    mkdir -p "$resultsDir"
+    /usr/bin/python3 damBreachAnalysis.py matrix "$resultsDir" $scale $dirs \
+        || { echo "Allrun: the matrix analysis failed"; exit 1; }
+    # where the runs sit on the bedload chart (docs/erosion.md)
+    /usr/bin/python3 damBreachAnalysis.py shields "$resultsDir" $scale $dirs \
+        || { echo "Allrun: the Shields analysis failed"; exit 1; }
+fi
+}
