@@ -28,6 +28,11 @@ set_tests_properties(case.closedBoxParallel PROPERTIES LABELS "case;parallel" TI
 add_test(case.badAlphaControls "bash" "cases/badAlphaControls.sh")
 set_tests_properties(case.badAlphaControls PROPERTIES LABELS "case;input" TIMEOUT 300)
 
+# Turbulence with eps over and in a fixed bed: k damped inside the bed, the
+# log law and the grains' stress above it (interDemFoam, pimpleDemFoam)
+add_test(case.turbulentBed "bash" "cases/turbulentBed.sh")
+set_tests_properties(case.turbulentBed PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 1200)
+
 # The library's floors: no include runs back up (bin/includeLayers)
 add_test(build.includeLayers "bash" "cases/includeLayers.sh")
 set_tests_properties(build.includeLayers PROPERTIES LABELS "build" TIMEOUT 60)

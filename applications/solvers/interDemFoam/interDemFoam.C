@@ -30,6 +30,8 @@ Description
 #include "subCycle.H"
 #include "immiscibleIncompressibleTwoPhaseMixture.H"
 #include "turbulentTransportModel.H"
+#include "PhaseCompressibleTurbulenceModel.H"
+#include "epsTurbulence.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "particleCloud.H"
@@ -70,7 +72,12 @@ int main(int argc, char *argv[])
     #include "createFvOptions.H"
     #include "initContinuityErrs.H"
 
-    turbulence->validate();
+    // The particles' drag damps the turbulence (RAS, LES with particles)
+    particles.addTurbulenceDamping
+    (
+        fvOptions, rho, turbulence.solvedFields(mesh)
+    );
+    turbulence.validate();
 
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
@@ -124,7 +131,7 @@ int main(int argc, char *argv[])
 
             if (pimple.turbCorr())
             {
-                turbulence->correct();
+                turbulence.correct();
             }
         }
 

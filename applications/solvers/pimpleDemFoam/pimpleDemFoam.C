@@ -27,6 +27,8 @@ Description
 #include "fvCFD.H"
 #include "singlePhaseTransportModel.H"
 #include "turbulentTransportModel.H"
+#include "PhaseIncompressibleTurbulenceModel.H"
+#include "epsTurbulence.H"
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "particleCloud.H"
@@ -64,7 +66,12 @@ int main(int argc, char *argv[])
     #include "createFvOptions.H"
     #include "initContinuityErrs.H"
 
-    turbulence->validate();
+    // The particles' drag damps the turbulence (RAS, LES with particles)
+    particles.addTurbulenceDamping
+    (
+        fvOptions, rho, turbulence.solvedFields(mesh)
+    );
+    turbulence.validate();
 
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
@@ -102,7 +109,7 @@ int main(int argc, char *argv[])
             if (pimple.turbCorr())
             {
                 laminarTransport.correct();
-                turbulence->correct();
+                turbulence.correct();
             }
         }
 

@@ -62,6 +62,7 @@ Foam::demCoupling::fluidSampler::fluidSampler
     velocity_(velocitySource::voidFractionAverage),
     fluctuation_(),
     up_(0, 0, 1),
+    dictName_(dict.name()),
     needVorticity_(false),
     needViscousStress_(false)
 {
@@ -91,12 +92,26 @@ Foam::demCoupling::fluidSampler::fluidSampler
                 << " vertical direction is against it" << exit(FatalIOError);
         }
         up_ = -g/mag(g);
-        Info<< "Turbulent velocity fluctuations seen by the particles:"
-            << " streamwise r.m.s. " << fluctuation_->intensity()
-            << " |U|, lateral " << velocityFluctuation::lateralRatio
-            << " and vertical " << velocityFluctuation::verticalRatio
-            << " of it, a new eddy every " << fluctuation_->eddyTime()
-            << " s (velocityFluctuation)" << endl;
+        if (fluctuation_->fromTurbulence())
+        {
+            Info<< "Turbulent velocity fluctuations seen by the particles:"
+                << " from the turbulence model's k and epsilon at each"
+                << " particle (eddy-interaction model, Gosman & Ioannides"
+                << " 1983: streamwise r.m.s. "
+                << velocityFluctuation::streamwisePerSqrtK << " sqrt(k),"
+                << " lateral " << velocityFluctuation::lateralRatio
+                << " and vertical " << velocityFluctuation::verticalRatio
+                << " of it; velocityFluctuation source turbulence)" << endl;
+        }
+        else
+        {
+            Info<< "Turbulent velocity fluctuations seen by the particles:"
+                << " streamwise r.m.s. " << fluctuation_->intensity()
+                << " |U|, lateral " << velocityFluctuation::lateralRatio
+                << " and vertical " << velocityFluctuation::verticalRatio
+                << " of it, a new eddy every " << fluctuation_->eddyTime()
+                << " s (velocityFluctuation)" << endl;
+        }
     }
 
     for (const forceModel& model : forces)
@@ -112,8 +127,10 @@ Foam::demCoupling::fluidSampler::fluidSampler
 Foam::label Foam::demCoupling::fluidSampler::width() const
 {
     // Uf, eps, rhoF, muF, gradP [, UfAverage] [, vorticity] [, divTau]
+    // [, k, epsilon]
     return 9 + (velocity_ == velocitySource::cellPoint ? 3 : 0)
-      + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0);
+      + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0)
+      + (turbulenceFluctuations() ? 2 : 0);
 }
 
 
@@ -140,6 +157,11 @@ void Foam::demCoupling::fluidSampler::pack
     if (needViscousStress_)
     {
         out.put(s.divTau);
+    }
+    if (turbulenceFluctuations())
+    {
+        out.put(s.kTurb);
+        out.put(s.epsilonTurb);
     }
 }
 
@@ -169,6 +191,11 @@ void Foam::demCoupling::fluidSampler::unpack
     {
         s.divTau = in.vector();
     }
+    if (turbulenceFluctuations())
+    {
+        s.kTurb = in.scalar();
+        s.epsilonTurb = in.scalar();
+    }
 }
 
 
@@ -186,6 +213,18 @@ Foam::demCoupling::fluidSampler::sample
 {
     const label n = particles.size();
     List<particleFluidState> states(n);
+
+    if (turbulenceFluctuations() && !fluid.turbulent())
+    {
+        FatalErrorInFunction
+            << "velocityFluctuation source turbulence in " << dictName_
+            << " needs a turbulence model with the fluid fraction in its"
+            << " equations: simulationType RAS or LES in"
+            << " constant/turbulenceProperties (this run is laminar)." << nl
+            << "    For a laminar run give the fluctuations' size and"
+            << " lifetime: source fixed; intensity ...; eddyTime ...;"
+            << exit(FatalError);
+    }
 
     // This processor's part of each particle's weighted averages
     {
@@ -260,6 +299,16 @@ Foam::demCoupling::fluidSampler::sample
                 states[i].divTau = divTau[i];
             }
         }
+        if (turbulenceFluctuations())
+        {
+            const scalarList ki(vf.sample(fluid.k()()));
+            const scalarList epsiloni(vf.sample(fluid.epsilon()()));
+            forAll(states, i)
+            {
+                states[i].kTurb = ki[i];
+                states[i].epsilonTurb = epsiloni[i];
+            }
+        }
     }
 
     // Summed over the processors that hold cells of a particle
@@ -288,7 +337,18 @@ Foam::demCoupling::fluidSampler::sample
         forAll(states, i)
         {
             particleFluidState& s = states[i];
-            s.Uf += (*fluctuation_)(particles.tag[i], t, s.Uf, up_);
+            if (fluctuation_->fromTurbulence())
+            {
+                s.Uf += fluctuation_->turbulent
+                (
+                    particles.tag[i], t, s.Uf, up_, s.kTurb, s.epsilonTurb,
+                    mag(s.Uf - s.Up)
+                );
+            }
+            else
+            {
+                s.Uf += (*fluctuation_)(particles.tag[i], t, s.Uf, up_);
+            }
         }
     }
     return states;

@@ -33,6 +33,20 @@ double unitOpen(const uint64_t h)
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
 
+const Foam::Enum
+<
+    Foam::demCoupling::velocityFluctuation::fluctuationSource
+>
+Foam::demCoupling::velocityFluctuation::fluctuationSourceNames
+({
+    { fluctuationSource::fixed, "fixed" },
+    { fluctuationSource::turbulence, "turbulence" },
+});
+
+const Foam::scalar
+Foam::demCoupling::velocityFluctuation::streamwisePerSqrtK =
+    2.30*std::sqrt(2.0/(2.30*2.30 + 1.63*1.63 + 1.27*1.27));
+
 const Foam::scalar Foam::demCoupling::velocityFluctuation::lateralRatio =
     1.63/2.30;
 
@@ -47,13 +61,33 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     const dictionary& dict
 )
 :
+    source_(fluctuationSource::fixed),
     intensity_(0),
     eddyTime_(1),
     seed_(0)
 {
+    const dictionary& all = dict.subDict("velocityFluctuation");
+    source_ = inputCheck::selectOrDefault
+    (
+        all, "source", fluctuationSourceNames, fluctuationSource::fixed,
+        "fixed (intensity and eddyTime given; the default) and turbulence"
+        " (size and lifetime from the turbulence model's k and epsilon)"
+    );
+    if (fromTurbulence())
+    {
+        const dictionary& coeffs = inputCheck::subDict
+        (
+            dict, "velocityFluctuation", {"source", "seed"}
+        );
+        seed_ = inputCheck::getOrDefault<label>
+        (
+            coeffs, "seed", 0, [](const label s) { return s >= 0; }, ">= 0"
+        );
+        return;
+    }
     const dictionary& coeffs = inputCheck::subDict
     (
-        dict, "velocityFluctuation", {"intensity", "eddyTime", "seed"}
+        dict, "velocityFluctuation", {"source", "intensity", "eddyTime", "seed"}
     );
     intensity_ = inputCheck::get<scalar>
     (
@@ -77,6 +111,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     const label seed
 )
 :
+    source_(fluctuationSource::fixed),
     intensity_(intensity),
     eddyTime_(eddyTime),
     seed_(seed)
@@ -102,6 +137,12 @@ Foam::scalar Foam::demCoupling::velocityFluctuation::normal
 }
 
 
+double Foam::demCoupling::velocityFluctuation::phase(const label tag) const
+{
+    return unitOpen(mix(mix(uint64_t(seed_) ^ 0x5EEDULL) ^ uint64_t(tag)));
+}
+
+
 int64_t Foam::demCoupling::velocityFluctuation::eddy
 (
     const label tag,
@@ -109,9 +150,39 @@ int64_t Foam::demCoupling::velocityFluctuation::eddy
 ) const
 {
     // The particle's own shift of the eddy times, in [0, 1) eddyTime
-    const double phase =
-        unitOpen(mix(mix(uint64_t(seed_) ^ 0x5EEDULL) ^ uint64_t(tag)));
-    return int64_t(std::floor(t/eddyTime_ + phase));
+    return int64_t(std::floor(t/eddyTime_ + phase(tag)));
+}
+
+
+Foam::vector Foam::demCoupling::velocityFluctuation::draw
+(
+    const label tag,
+    const int64_t e,
+    const vector& es,
+    const vector& up,
+    const scalar sigma
+) const
+{
+    // Vertical: up made normal to the flow (any normal where the flow is
+    // vertical)
+    vector ev(up - (up & es)*es);
+    if (mag(ev) < 1e-6)
+    {
+        const vector trial
+        (
+            mag(es.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)
+        );
+        ev = trial - (trial & es)*es;
+    }
+    ev /= mag(ev);
+    const vector el(ev ^ es);
+
+    return sigma
+       *(
+            normal(tag, e, 0)*es
+          + lateralRatio*normal(tag, e, 1)*el
+          + verticalRatio*normal(tag, e, 2)*ev
+        );
 }
 
 
@@ -128,29 +199,55 @@ Foam::vector Foam::demCoupling::velocityFluctuation::operator()
     {
         return Zero;
     }
-    const vector es(U/magU);
+    return draw(tag, eddy(tag, t), U/magU, up, intensity_*magU);
+}
 
-    // Vertical: up made normal to the flow (any normal where the flow is
-    // vertical)
-    vector ev(up - (up & es)*es);
-    if (mag(ev) < 1e-6)
+
+Foam::scalar Foam::demCoupling::velocityFluctuation::lifetime
+(
+    const scalar k,
+    const scalar epsilon,
+    const scalar slip
+)
+{
+    // Gosman & Ioannides (1983): the eddy's length and the longer of the
+    // particle's ways out of it, the eddy's own decay or crossing it
+    const scalar Cmu = 0.09;
+    const scalar le = std::pow(Cmu, 0.75)*std::pow(k, 1.5)/epsilon;
+    return le/max(std::sqrt(2.0*k/3.0), slip);
+}
+
+
+Foam::vector Foam::demCoupling::velocityFluctuation::turbulent
+(
+    const label tag,
+    const scalar t,
+    const vector& U,
+    const vector& up,
+    const scalar k,
+    const scalar epsilon,
+    const scalar slip
+) const
+{
+    if (!(k > SMALL) || !(epsilon > SMALL))
+    {
+        return Zero;
+    }
+    // Streamwise along U; where the fluid rests, any horizontal direction
+    const scalar magU = mag(U);
+    vector es(U/max(magU, VSMALL));
+    if (magU < VSMALL)
     {
         const vector trial
         (
-            mag(es.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)
+            mag(up.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)
         );
-        ev = trial - (trial & es)*es;
+        es = trial - (trial & up)*up;
+        es /= mag(es);
     }
-    ev /= mag(ev);
-    const vector el(ev ^ es);
-
-    const int64_t e = eddy(tag, t);
-    return intensity_*magU
-       *(
-            normal(tag, e, 0)*es
-          + lateralRatio*normal(tag, e, 1)*el
-          + verticalRatio*normal(tag, e, 2)*ev
-        );
+    const scalar T = lifetime(k, epsilon, slip);
+    const int64_t e = int64_t(std::floor(t/T + phase(tag)));
+    return draw(tag, e, es, up, streamwisePerSqrtK*std::sqrt(k));
 }
 
 

@@ -6,6 +6,9 @@
 #include "demRestartFile.H"
 #include "sceneMaps.H"
 #include "inputCheck.H"
+#include "couplingKeywords.H"
+#include "turbulenceDragDamping.H"
+#include "Switch.H"
 #include "fvcFlux.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
@@ -32,6 +35,9 @@ Foam::demCoupling::particleCloud::voidFractionRateSourceNames
 
 namespace
 {
+// The keywords of couplingProperties read here
+const Foam::demCoupling::couplingKeywords::declare keywords({"dragDamping"});
+
 // Open constant/couplingProperties if the case has one
 Foam::autoPtr<Foam::IOdictionary> readCouplingDict(const Foam::fvMesh& mesh)
 {
@@ -692,6 +698,30 @@ Foam::demCoupling::particleCloud::voidFractionRateFromFlux() const
         }
     }
     return fvc::div(phiSolid);
+}
+
+
+void Foam::demCoupling::particleCloud::addTurbulenceDamping
+(
+    fv::optionList& fvOptions,
+    const volScalarField& rho,
+    const wordList& turbulenceFields
+) const
+{
+    if (!active() || turbulenceFields.empty())
+    {
+        return;
+    }
+    if (!couplingDict_().getOrDefault<Switch>("dragDamping", true))
+    {
+        Info<< "Turbulence not damped by the particles (dragDamping no in "
+            << couplingDict_().name() << ")" << endl;
+        return;
+    }
+    fvOptions.append
+    (
+        new turbulenceDragDamping(mesh_, Ksl_, rho, turbulenceFields)
+    );
 }
 
 
