@@ -37,7 +37,12 @@
 #       here: the pressure-gradient force alone then carries the bed's form
 #       drag, the water runs at 7.6 m/s and q* = 2.3 (measured;
 #       docs/erosion.md).
-#   bedload.sh          all six runs (about 1.5 min on one core)
+#   k-omega SST (the tutorial's default: eps in its equations, the grains
+#       damping it, fluctuations from its k and epsilon, h = 6 d), theta =
+#       0.8: q* within a factor of 2 of Wong-Parker (2.58; measured 1.46)
+#       with the grains carrying rho g S h within 10 %; negative control:
+#       the laminar run at 0.8 must fail it (0.547 = 0.21 of Wong-Parker)
+#   bedload.sh          all seven runs (about 2 min on one core)
 # Measured (docs/erosion.md, Test): theta 0.2 q* 6.4e-5; theta 0.8 q* 0.547
 # (0.558, 0.536 in the two halves), the grains carrying 1.002 of rho g S h;
 # cellPoint 0.997; fluctuations 0.0135, 0.0083 and 1.0006; no fluid forces
@@ -143,8 +148,37 @@ check "fluctuations: fluid force on the grains / imposed stress" "$fRatio" \
 controlRun laminar "$thetaFluct" "without fluctuations" "the fluctuation check"
 l1=$control1 l2=$control2
 
+# The tutorial's configuration (k-omega SST with eps, the grains' drag
+# damping it, fluctuations from its k and epsilon, h = 6 d) at theta 0.8:
+# q* within a factor of 2 of Wong-Parker (2006), q* = 3.97 (theta -
+# 0.0495)^1.5 = 2.58 (a factor of 2 is the scatter of the flume data
+# behind the law, Wong & Parker 2006 Fig. 3), the grains carrying rho g S h
+# within 10 %. Negative control: the laminar run at theta 0.8 above must
+# fail the same check (measured 0.547 = 0.21 of Wong-Parker).
+./Allrun -size small -tag turbulent -theta "$thetaHigh" -endTime $endTime \
+    > log.Allrun.turbulent 2>&1 \
+    || { tail -20 log.Allrun.turbulent; fail "Allrun, turbulent (log.Allrun.turbulent)"; }
+cat turbulent.theta.$thetaHigh/log.bedloadAnalysis
+grep -q "Selecting RAS turbulence model kOmegaSST" turbulent.theta.$thetaHigh/log.interDemFoam \
+    || fail "the turbulent run did not select kOmegaSST"
+grep -q "Turbulence damped by the particles' drag" turbulent.theta.$thetaHigh/log.interDemFoam \
+    || fail "the turbulent run is not damped by the grains"
+grep -q "from the turbulence model's k and epsilon" turbulent.theta.$thetaHigh/log.interDemFoam \
+    || fail "the turbulent run's grains do not see its fluctuations"
+qT=$(value turbulent.theta.$thetaHigh qstar)
+wp=$(value turbulent.theta.$thetaHigh qstarWongParker)
+tRatio=$(value turbulent.theta.$thetaHigh forceRatio)
+check "turbulent: q* against Wong-Parker" "$qT" "v > 0.5*$wp && v < 2*$wp" \
+    "theta $thetaHigh, k-omega SST: q* $qT, expected within a factor of 2 of Wong-Parker's $wp"
+check "turbulent: fluid force on the grains / imposed stress" "$tRatio" \
+    'v > 0.9 && v < 1.1' \
+    "theta $thetaHigh, k-omega SST: the grains carry $tRatio of rho g S h, expected 1 +- 0.1"
+awk -v v="$qHigh" -v w="$wp" 'BEGIN { exit !(v > 0.5*w && v < 2*w) }' \
+    && fail "negative control: the laminar q* $qHigh is within a factor of 2 of Wong-Parker's $wp too: the check cannot tell them apart"
+echo "ok: turbulent q* $qT within a factor of 2 of Wong-Parker $wp; laminar $qHigh is not"
+
 # Negative control: no fluid-particle force
 setEntry constant/couplingProperties forces "( )"
 controlRun noforce "$thetaHigh" "without fluid forces" "the transport check"
 c1=$control1 c2=$control2
-pass "theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); without fluid forces q* $c1, $c2: the transport check fails as it must"
+pass "turbulent theta $thetaHigh: q* $qT (Wong-Parker $wp, grains carry $tRatio of tau_b); laminar: theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); without fluid forces q* $c1, $c2: the transport check fails as it must"

@@ -14,6 +14,11 @@
 #     error at dx/d = 2 (0.74 %, the mesh study's value);
 #   - a coupling step in the measured blow-up region of explicit DEM drag
 #     (deltaT 0.5 s = 3.6 tau_p): exit 1 naming the coupling step;
+#   - the bed's expected Shields number (-shields) against the measured
+#     onsets of bedload (etc/sceneMaps/bedloadOnset.dat: laminar 0.4-0.5,
+#     k-omega SST 0.3-0.4, docs/erosion.md): at 0.35 this laminar case gets
+#     a WARN that a turbulent run would move the bed and a laminar one not
+#     (exit 0); control: at 0.1 "laminar flow is enough", no such WARN;
 #   - bad input: a missing DEM script: a clear error naming the script and
 #     the keyword, no crash.
 # Reference: the measured maps checkDemScene reads (the cell-size study's
@@ -79,7 +84,20 @@ setEntry system/controlDict deltaT 1e-4
 setEntry constant/couplingProperties demDrag implicit
 sed -i 's/couple\/cfd\/force /couple\/cfd\/force\/implicit /; s/couple\/cfd\/force$/couple\/cfd\/force\/implicit/' DEM/in.liggghts
 
-# 4. bad input: the DEM script is missing
+# 4. the bed's Shields number against the measured onsets of bedload
+#    (etc/sceneMaps/bedloadOnset.dat: laminar 0.4-0.5, k-omega SST 0.3-0.4):
+#    this laminar case at 0.35 moves no grain where a turbulent one would
+#    (WARN, exit 0); control: at 0.1 no model moves the bed, laminar is
+#    enough (no such warning)
+extra=(-shields 0.35)
+check_scene shieldsBetween 0 "WARN  the bed's Shields number 0.35 lies between the turbulent onset of bedload (0.3-0.4, kOmegaSST) and the laminar one (0.4-0.5)"
+extra=(-shields 0.1)
+check_scene shieldsLow 0 "laminar flow is enough: no measured model moves a bed at theta 0.1"
+! grep -q "WARN  the bed's Shields number" log.shieldsLow \
+    || fail "shieldsLow: warned about the bed's Shields number at 0.1"
+extra=()
+
+# 5. bad input: the DEM script is missing
 setEntry constant/couplingProperties demScript '"DEM/in.nothere"'
 timeout 120 checkDemScene > log.missingScript 2>&1 < /dev/null
 rc=$?
@@ -92,4 +110,4 @@ echo "ok: missingScript ($(grep -m1 'in.nothere' log.missingScript | sed 's/^ */
 ls -d "${TMPDIR:-/tmp}"/checkDemScene.* > /dev/null 2>&1 \
     && fail "a scratch folder checkDemScene.* was left in ${TMPDIR:-/tmp}"
 
-pass "checkDemScene: failure region, safe scene, blow-up step and missing script as measured"
+pass "checkDemScene: failure region, safe scene, blow-up step, the bed's Shields number and missing script as measured"

@@ -23,11 +23,14 @@ Description
     measured failure region, 0 otherwise (warnings included).
 
 Usage
-    checkDemScene [-targetError 1] [-velocity 0.1] [-maps DIR]
+    checkDemScene [-targetError 1] [-velocity 0.1] [-shields 0.1] [-maps DIR]
 
     -targetError  the settling error allowed, in % (default 1)
     -velocity     the expected particle speed [m/s] for the Courant number
                   (default: the median particle's terminal velocity)
+    -shields      the bed's expected Shields number: whether laminar flow
+                  is enough or a turbulence model is needed to move it
+                  (the measured onsets of bedload, docs/erosion.md)
     -maps         the folder of the measured tables (default
                   $INTERDEMFOAM_DIR/etc/sceneMaps)
 
@@ -164,7 +167,8 @@ namespace
         const dictionary& couplingDict,
         const demCoupling::sceneMaps& maps,
         const scalar target,
-        const scalar velocity
+        const scalar velocity,
+        const scalar shields
     )
     {
         const Time& runTime = mesh.time();
@@ -192,7 +196,7 @@ namespace
         (
             mesh, maps, controls, voidFraction(), forces
         );
-        const label failures = check.run(engine(), target, velocity);
+        const label failures = check.run(engine(), target, velocity, shields);
         engine.clear();
         return failures;
     }
@@ -220,6 +224,12 @@ int main(int argc, char *argv[])
     );
     argList::addOption
     (
+        "shields", "theta",
+        "the bed's expected Shields number: is laminar flow enough, or is"
+        " a turbulence model needed to move it"
+    );
+    argList::addOption
+    (
         "maps", "dir", "folder of the measured tables (default"
         " $INTERDEMFOAM_DIR/etc/sceneMaps)"
     );
@@ -230,6 +240,7 @@ int main(int argc, char *argv[])
 
     const scalar target = args.getOrDefault<scalar>("targetError", 1);
     const scalar velocity = args.getOrDefault<scalar>("velocity", -1);
+    const scalar shields = args.getOrDefault<scalar>("shields", -1);
     if (target <= 0)
     {
         FatalErrorInFunction
@@ -259,7 +270,7 @@ int main(int argc, char *argv[])
     }
 
     const label failures =
-        checkScene(mesh, couplingDict(), maps, target, velocity);
+        checkScene(mesh, couplingDict(), maps, target, velocity, shields);
 
     Info<< (failures ? "checkDemScene: FAIL" : "checkDemScene: ok") << nl
         << "End" << nl << endl;

@@ -468,6 +468,93 @@ void Foam::demCoupling::sceneCheck::compareModels
 }
 
 
+void Foam::demCoupling::sceneCheck::checkBedload(const scalar shields)
+{
+    // The case's turbulence: laminar, or its RAS/LES model
+    const IOdictionary tp
+    (
+        IOobject
+        (
+            "turbulenceProperties", mesh_.time().constant(), mesh_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    const word type(tp.get<word>("simulationType"));
+    word model("laminar");
+    if (type != "laminar")
+    {
+        model = tp.subDict(type).get<word>(type + "Model");
+    }
+
+    scalar lamBelow = 0, lamOnset = 0;
+    if (!maps_.bedloadOnset("laminar", lamBelow, lamOnset))
+    {
+        warnings_.append
+        (
+            "no measured laminar onset of bedload in the maps"
+            " (bedloadOnset.dat): the bed's Shields number is not checked"
+        );
+        return;
+    }
+    // The lowest onset measured with a turbulence model
+    word turbModel;
+    scalar turbBelow = GREAT, turbOnset = GREAT;
+    for (const word& m : maps_.onsetModels())
+    {
+        scalar b = 0, o = 0;
+        if (m != "laminar" && maps_.bedloadOnset(m, b, o) && o < turbOnset)
+        {
+            turbModel = m;
+            turbBelow = b;
+            turbOnset = o;
+        }
+    }
+    Info<< "    bed Shields       " << fig(shields) << " (given); bedload"
+        << " starts between " << fig(lamBelow) << " and " << fig(lamOnset)
+        << " laminar";
+    if (!turbModel.empty())
+    {
+        Info<< ", between " << fig(turbBelow) << " and " << fig(turbOnset)
+            << " with " << turbModel.c_str();
+    }
+    Info<< " (the bedload channel, cells of 2 d); this case: "
+        << model.c_str() << endl;
+
+    const bool laminar = (model == "laminar");
+    if (shields <= min(lamBelow, turbBelow))
+    {
+        Info<< "    -> laminar flow is enough: no measured model moves a bed"
+            << " at theta " << fig(shields) << (laminar ? "" : " (the"
+            " turbulence model costs CFD time and moves no grain either)")
+            << endl;
+    }
+    else if (laminar && !turbModel.empty() && shields > turbBelow
+          && shields <= lamBelow)
+    {
+        warnings_.append
+        (
+            "the bed's Shields number " + fig(shields) + " lies between the"
+            " turbulent onset of bedload (" + fig(turbBelow) + "-"
+          + fig(turbOnset) + ", " + turbModel + ") and the laminar one ("
+          + fig(lamBelow) + "-" + fig(lamOnset) + "): a laminar run moves"
+            " no grain where a turbulent one does; use simulationType RAS,"
+            " RASModel " + turbModel + " (constant/turbulenceProperties)"
+            " and velocityFluctuation { source turbulence; }"
+        );
+    }
+    else if (shields <= lamBelow)
+    {
+        Info<< "    -> a turbulence model is needed to move this bed (this"
+            << " case has one)" << endl;
+    }
+    else
+    {
+        Info<< "    -> above the laminar onset: both move the bed (the"
+            << " turbulent flux is larger; docs/erosion.md)" << endl;
+    }
+}
+
+
 void Foam::demCoupling::sceneCheck::printVerdict() const
 {
     Info<< nl << "Verdict:" << endl;
@@ -498,7 +585,8 @@ Foam::label Foam::demCoupling::sceneCheck::run
 (
     demEngine& engine,
     const scalar targetErrorPercent,
-    const scalar velocity
+    const scalar velocity,
+    const scalar shields
 )
 {
     failures_.clear();
@@ -534,6 +622,11 @@ Foam::label Foam::demCoupling::sceneCheck::run
         checkCouplingStep(s, dt, fromMaxDeltaT);
         checkCourant(s, dt, velocity);
         compareModels(s, targetErrorPercent);
+    }
+    if (shields > 0)
+    {
+        Info<< endl;
+        checkBedload(shields);
     }
     printVerdict();
     return failures_.size();

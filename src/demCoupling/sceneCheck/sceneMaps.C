@@ -154,6 +154,18 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
         d.blown = number(r[5], drag) > 0.5;
         dragRuns_.append(d);
     }
+    // bedload onsets (optional): model below onset source
+    const fileName onsets(dir/"bedloadOnset.dat");
+    if (isFile(onsets))
+    {
+        for (const List<std::string>& r : readRows(onsets))
+        {
+            requireColumns(r, 3, onsets);
+            onsetModels_.append(word(r[0]));
+            onsetBelow_.append(number(r[1], onsets));
+            onsetAt_.append(number(r[2], onsets));
+        }
+    }
     if (models_.empty())
     {
         FatalErrorInFunction
@@ -176,6 +188,26 @@ Foam::demCoupling::sceneMaps::sceneMaps(const fileName& dir)
 Foam::fileName Foam::demCoupling::sceneMaps::defaultDir()
 {
     return fileName(getEnv("INTERDEMFOAM_DIR"))/"etc"/"sceneMaps";
+}
+
+
+bool Foam::demCoupling::sceneMaps::bedloadOnset
+(
+    const word& model,
+    scalar& below,
+    scalar& onset
+) const
+{
+    forAll(onsetModels_, i)
+    {
+        if (onsetModels_[i] == model)
+        {
+            below = onsetBelow_[i];
+            onset = onsetAt_[i];
+            return true;
+        }
+    }
+    return false;
 }
 
 

@@ -18,6 +18,10 @@
   bedloadAnalysis.py flagship              the estimate of theta in the
                                             flagship's overtopping (docs/
                                             erosion.md)
+  bedloadAnalysis.py onsetMap <out> <model>=<table.dat> ...
+                                            the measured onsets checkDemScene
+                                            reads (etc/sceneMaps/
+                                            bedloadOnset.dat)
   options: --noPlot (collect: table only)
 
 A run's records (Allrun, DEM/in.bedload, system/controlDict):
@@ -382,6 +386,39 @@ def flagship():
             name, q, hc, thetaCrest, h, tau, ' / '.join(th)))
 
 
+def onsetMap(outPath, entries):
+    """The measured onsets for checkDemScene (etc/sceneMaps): per model the
+    last Shields number of a sweep without sustained transport and the
+    first from which every run transports, from the sweeps' tables."""
+    lines = ['# The onset of bedload in the bedload channel (tutorials/'
+             'interDemFoam/bedload, docs/erosion.md; written by '
+             'bedloadAnalysis.py onsetMap)',
+             '# model: the turbulence model (simulationType laminar, or the '
+             'RAS/LES model); below: the last theta without sustained '
+             'transport; onset: the first theta from which every run '
+             'transports; source: the sweep',
+             '# model below onset source']
+    for entry in entries:
+        model, table = entry.split('=', 1)
+        rows = [l.split() for l in open(table)
+                if l.strip() and not l.startswith('#')]
+        theta = [float(r[0]) for r in rows]
+        transport = [int(float(r[3])) for r in rows]
+        steady = [int(float(r[11])) for r in rows]
+        onset = None
+        for i in range(len(rows)):
+            if all(transport[j] and steady[j] for j in range(i, len(rows))):
+                onset = theta[i]
+                break
+        if onset is None:
+            sys.exit('onsetMap: %s has no onset' % table)
+        below = max(t for t in theta if t < onset)
+        lines.append('%-12s %-6g %-6g %s' % (model, below, onset, table))
+    with open(outPath, 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+    print('\n'.join(lines))
+
+
 if __name__ == '__main__':
     args = [a for a in sys.argv[1:] if not a.startswith('--')]
     plot = '--noPlot' not in sys.argv
@@ -405,5 +442,7 @@ if __name__ == '__main__':
         flagship()
     elif len(args) >= 3 and args[0] == 'collect':
         collect(args[1], args[2:], plot)
+    elif len(args) >= 3 and args[0] == 'onsetMap':
+        onsetMap(args[1], args[2:])
     else:
         sys.exit(__doc__)

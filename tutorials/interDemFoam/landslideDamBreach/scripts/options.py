@@ -32,7 +32,7 @@ PIECE_LENGTH = '20'     # s, the pieces after the first
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
 VARIANTS = ('-width, -cellSize, -voidFraction, -forces, -fluidVelocity, '
-            '-fluctuation, -minVoidFraction, -grading, -bed, -maxCo, '
+            '-fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
             '-semiImplicitAlpha, -maxTime')
 
 
@@ -80,6 +80,7 @@ def is_variant(o):
                               'fluidVelocity', 'fluctuation',
                               'minVoidFraction', 'grading', 'maxTime')) \
         or o['cellSize'] != '0.05' or o['bed'] != 'rough' \
+        or o['turbulence'] != 'laminar' \
         or o['maxCo'] != '0.5' or o['semiImplicitAlpha'] == 'yes'
 
 
@@ -114,14 +115,24 @@ def check_coupling(o, s):
         raise OptionError("-minVoidFraction takes the floor of the void "
                           "fraction, a number between 0 and 1 (exclusive), "
                           "got '%s'" % o['minVoidFraction'])
-    if o['fluctuation']:
+    if o['turbulence'] not in ('laminar', 'kOmegaSST'):
+        raise OptionError("-turbulence: use laminar (the default) or "
+                          "kOmegaSST (k-omega SST with the fluid fraction in "
+                          "its equations), got '%s'" % o['turbulence'])
+    if o['fluctuation'] == 'turbulence':
+        if o['turbulence'] == 'laminar':
+            raise OptionError("-fluctuation turbulence takes the "
+                              "fluctuations from a turbulence model: give "
+                              "-turbulence kOmegaSST")
+    elif o['fluctuation']:
         # as the shell's read of one line: two words and the rest
         w = words(o['fluctuation'].split('\n')[0]) + ['', '']
         s['intensity'], s['eddyTime'] = w[0], w[1]
         if not (number(w[0], lambda i: i >= 0) and number(w[1], lambda t: t > 0)
                 and not ''.join(w[2:])):
             raise OptionError("-fluctuation takes two numbers, the intensity "
-                              "(>= 0) and the eddy time (s, > 0), got '%s'"
+                              "(>= 0) and the eddy time (s, > 0), or "
+                              "turbulence, got '%s'"
                               % o['fluctuation'])
     if o['voidFraction'] not in ('', 'virtualSphere', 'divided', 'centre'):
         raise OptionError("-voidFraction: unknown model '%s': use "

@@ -24,6 +24,7 @@ voidFraction=""
 forces=""
 fluidVelocity=""
 fluctuation=""
+turbulence=laminar
 minVoidFraction=""
 grading=""
 bed=rough
@@ -50,6 +51,7 @@ parseOptions()
             -forces)   forces="$2"; shift ;;
             -fluidVelocity) fluidVelocity="$2"; shift ;;
             -fluctuation) fluctuation="$2"; shift ;;
+            -turbulence) turbulence="$2"; shift ;;
             -minVoidFraction) minVoidFraction="$2"; shift ;;
             -grading)  grading="$2"; shift ;;
             -bed)      bed="$2"; shift ;;
@@ -62,7 +64,7 @@ parseOptions()
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid)"; exit 1 ;;
         esac
         shift
     done
@@ -84,7 +86,8 @@ checkOptions()
         semiImplicitAlpha="$semiImplicitAlpha" jobs="$jobs" tag="$tag" \
         width="$widthOption" cellSize="$cellSize" voidFraction="$voidFraction" \
         forces="$forces" fluidVelocity="$fluidVelocity" \
-        fluctuation="$fluctuation" minVoidFraction="$minVoidFraction" \
+        fluctuation="$fluctuation" turbulence="$turbulence" \
+        minVoidFraction="$minVoidFraction" \
         grading="$grading" bed="$bed" maxTime="$maxTimeOption" \
         demGrid="$demGrid" resume="$resume") \
         || { echo "$settings"; exit 1; }

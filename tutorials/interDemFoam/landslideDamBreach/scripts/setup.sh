@@ -165,10 +165,18 @@ if [ -n "$minVoidFraction" ]
 then
     foamDictionary -entry minVoidFraction -set "$minVoidFraction" "$dir"/constant/couplingProperties > /dev/null || return 1
 fi
-if [ -n "$fluctuation" ]
+if [ "$fluctuation" = turbulence ]
+then
+    foamDictionary -entry velocityFluctuation -add "{ source turbulence; }" \
+        "$dir"/constant/couplingProperties > /dev/null || return 1
+elif [ -n "$fluctuation" ]
 then
     foamDictionary -entry velocityFluctuation -add "{ intensity $intensity; eddyTime $eddyTime; }" \
         "$dir"/constant/couplingProperties > /dev/null || return 1
+fi
+if [ "$turbulence" != laminar ]
+then
+    cp constant/turbulenceProperties.$turbulence "$dir"/constant/turbulenceProperties
 fi
 foamDictionary -entry numberOfSubdomains -set "$nProcs" "$dir"/system/decomposeParDict > /dev/null
 return 0
