@@ -18,6 +18,10 @@
   bedloadAnalysis.py flagship              the estimate of theta in the
                                             flagship's overtopping (docs/
                                             erosion.md)
+  bedloadAnalysis.py nearBed <run>          the turbulence the bed's grains
+                                            see (k-omega runs): per cell
+                                            layer, k, k/u*^2, the grains'
+                                            fluctuation intensity and life
   bedloadAnalysis.py onsetMap <out> <model>=<table.dat> ...
                                             the measured onsets checkDemScene
                                             reads (etc/sceneMaps/
@@ -42,6 +46,7 @@ Meyer-Peter-Mueller at theta = 0.0495, 5 % above its threshold 0.047).
 """
 import math
 import os
+import re
 import sys
 
 RHO, RHOS, G, D = 1000.0, 2650.0, 9.81, 0.01
@@ -386,6 +391,63 @@ def flagship():
             name, q, hc, thetaCrest, h, tau, ' / '.join(th)))
 
 
+def internalField(path, vector=False):
+    """The internalField of an ASCII OpenFOAM field file (nonuniform)."""
+    text = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<\w+>\s+(\d+)\s*\(",
+                  text)
+    if not m:
+        sys.exit('%s: no nonuniform internalField' % path)
+    n = int(m.group(1))
+    body = text[m.end():]
+    if vector:
+        rows = re.findall(r"\(([^()]*)\)", body)[:n]
+        return [[float(x) for x in r.split()] for r in rows]
+    return [float(x) for x in body.split(')')[0].split()[:n]]
+
+
+def nearBed(run):
+    """The turbulence the bed's grains see: per cell layer of the run's last
+    time the means of eps, u, k and what the fluctuations of the grains
+    there have (streamwise r.m.s. 1.05 sqrt(k) over u, eddy lifetime
+    l_e/max(sqrt(2k/3), u), l_e = C_mu^0.75 k^1.5/epsilon, epsilon =
+    C_mu k omega: velocityFluctuation source turbulence), and k over u*^2;
+    the layer holding the bed's surface (the lowest with eps > 0.6)
+    marked."""
+    st = settings(run)
+    times = [d for d in os.listdir(run)
+             if re.fullmatch(r'[0-9.]+', d) and float(d) > 0]
+    t = max(times, key=float)
+    nx, ny = int(st['nx']), int(st['ny'])
+    cell = float(st['lz'])/int(st['nz'])
+    k = internalField(os.path.join(run, t, 'k'))
+    om = internalField(os.path.join(run, t, 'omega'))
+    eps = internalField(os.path.join(run, t, 'voidfraction'))
+    U = internalField(os.path.join(run, t, 'U'), True)
+    ustar2 = float(st['theta'])*(RHOS - RHO)*G*0.01/RHO
+    print('%s at t = %s s (u*^2 = %.4g m2/s2)' % (run, t, ustar2))
+    print('%-8s %-6s %-7s %-8s %-7s %-9s %-8s %s' % (
+        'z[m]', 'eps', 'u[m/s]', 'k', 'k/u*^2', 'sigma/u', 'T[ms]', ''))
+    surface = None
+    for j in range(len(k)//(nx*ny)):
+        cells = range(j*nx*ny, (j + 1)*nx*ny)
+        e = mean([eps[c] for c in cells])
+        u = mean([U[c][0] for c in cells])
+        kk = mean([k[c] for c in cells])
+        w = mean([om[c] for c in cells])
+        epsT = 0.09*kk*w
+        le = 0.09**0.75*kk**1.5/epsT if epsT > 0 else 0
+        T = le/max(math.sqrt(2*kk/3), abs(u)) if kk > 0 else 0
+        mark = ''
+        if surface is None and e > 0.6:
+            surface = j
+            mark = '<- the bed surface'
+        print('%-8.3f %-6.3f %-7.3f %-8.4f %-7.3f %-9.3f %-8.3g %s' % (
+            (j + 0.5)*cell, e, u, kk, kk/ustar2,
+            1.052*math.sqrt(kk)/abs(u) if abs(u) > 1e-9 else float('nan'),
+            1e3*T, mark))
+
+
 def onsetMap(outPath, entries):
     """The measured onsets for checkDemScene (etc/sceneMaps): per model the
     last Shields number of a sweep without sustained transport and the
@@ -442,6 +504,8 @@ if __name__ == '__main__':
         flagship()
     elif len(args) >= 3 and args[0] == 'collect':
         collect(args[1], args[2:], plot)
+    elif len(args) == 2 and args[0] == 'nearBed':
+        nearBed(args[1])
     elif len(args) >= 3 and args[0] == 'onsetMap':
         onsetMap(args[1], args[2:])
     else:
