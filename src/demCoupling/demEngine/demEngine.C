@@ -313,28 +313,14 @@ void Foam::demCoupling::demEngine::checkMaterial
     const dictionary& couplingDict
 ) const
 {
-    using namespace LAMMPS_NS;
-
     // The Hertz contact's stiffness per atom type (where the script gives
     // one): E > 0 and -1 < nu <= 0.5, or the contact and the Rayleigh
     // time divide by zero
     const int nTypes = lmp_->atom->ntypes;
-    Fix* E = lmp_->modify->find_fix_property
-    (
-        "youngsModulus", "property/global", "peratomtype", nTypes, 0,
-        "interDemFoam", false
-    );
-    Fix* nu = lmp_->modify->find_fix_property
-    (
-        "poissonsRatio", "property/global", "peratomtype", nTypes, 0,
-        "interDemFoam", false
-    );
     for (int t = 0; t < nTypes; ++t)
     {
-        const double Et =
-            E ? static_cast<FixPropertyGlobal*>(E)->compute_vector(t) : 1;
-        const double nut =
-            nu ? static_cast<FixPropertyGlobal*>(nu)->compute_vector(t) : 0;
+        scalar Et = 1, nut = 0;
+        hertzProperties(t, Et, nut);
         if (!(Et > 0) || !std::isfinite(Et) || !(nut > -1 && nut <= 0.5))
         {
             FatalIOErrorInFunction(couplingDict)
@@ -583,18 +569,8 @@ Foam::scalar Foam::demCoupling::demEngine::rayleighTime
 
     dSmallest = 0;
     ESmallest = 0;
-    const int nTypes = lmp_->atom->ntypes;
-    Fix* E = lmp_->modify->find_fix_property
-    (
-        "youngsModulus", "property/global", "peratomtype", nTypes, 0,
-        "interDemFoam", false
-    );
-    Fix* nu = lmp_->modify->find_fix_property
-    (
-        "poissonsRatio", "property/global", "peratomtype", nTypes, 0,
-        "interDemFoam", false
-    );
-    if (!E || !nu)
+    scalar E0 = 0, nu0 = 0;
+    if (!hertzProperties(0, E0, nu0))
     {
         return -1;
     }
@@ -605,9 +581,8 @@ Foam::scalar Foam::demCoupling::demEngine::rayleighTime
     double tR = GREAT, rMin = 0, EMin = 0;
     for (int i = 0; i < atom.nlocal; ++i)
     {
-        const int t = atom.type[i] - 1;
-        const double Ei = static_cast<FixPropertyGlobal*>(E)->compute_vector(t);
-        const double nui = static_cast<FixPropertyGlobal*>(nu)->compute_vector(t);
+        scalar Ei = 0, nui = 0;
+        hertzProperties(atom.type[i] - 1, Ei, nui);
         const double r = atom.radius[i];
         const double rho = atom.rmass[i]/(4.0/3.0*constant::mathematical::pi*r*r*r);
         const double G = Ei/(2*(1 + nui));
@@ -635,6 +610,36 @@ Foam::scalar Foam::demCoupling::demEngine::rayleighTime
     dSmallest = 2*dE[0];
     ESmallest = dE[1];
     return global.value;
+}
+
+
+bool Foam::demCoupling::demEngine::hertzProperties
+(
+    const int type,
+    scalar& E,
+    scalar& nu
+) const
+{
+    using namespace LAMMPS_NS;
+
+    const int nTypes = lmp_->atom->ntypes;
+    Fix* EFix = lmp_->modify->find_fix_property
+    (
+        "youngsModulus", "property/global", "peratomtype", nTypes, 0,
+        "interDemFoam", false
+    );
+    Fix* nuFix = lmp_->modify->find_fix_property
+    (
+        "poissonsRatio", "property/global", "peratomtype", nTypes, 0,
+        "interDemFoam", false
+    );
+    if (!EFix || !nuFix)
+    {
+        return false;
+    }
+    E = static_cast<FixPropertyGlobal*>(EFix)->compute_vector(type);
+    nu = static_cast<FixPropertyGlobal*>(nuFix)->compute_vector(type);
+    return true;
 }
 
 
