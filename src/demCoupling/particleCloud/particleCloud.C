@@ -198,6 +198,19 @@ Foam::demCoupling::particleCloud::particleCloud
     // Keep the previous time level of eps for d(eps)/dt
     voidfraction_.oldTime();
 
+#ifdef __GLIBC__
+    // Every step allocates and frees per-cell fields (gradients, fluxes,
+    // tensors) and per-particle arrays of megabytes. glibc serves blocks
+    // that large with fresh mmaps (and trims the heap on free), so each one
+    // comes back as zeroed pages, one page fault per 4 kB: that was half
+    // the coupling time of a 1e5-particle run, and half of interFoam's own
+    // step on the flagship's mesh on a machine where page faults are
+    // expensive (docs/benchmarks.md, Against its floors). Keep them in the
+    // heap instead, with or without particles.
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
+
     if (!active())
     {
         Info<< "No constant/couplingProperties: no particles, the fluid"
@@ -208,15 +221,6 @@ Foam::demCoupling::particleCloud::particleCloud
 
     const dictionary& dict = couplingDict_();
 
-#ifdef __GLIBC__
-    // Every coupling step allocates and frees per-particle and per-cell
-    // arrays of megabytes. glibc serves blocks that large with fresh mmaps
-    // (and trims the heap on free), so each one comes back as zeroed pages,
-    // one page fault per 4 kB: that was half the coupling time of a 1e5-
-    // particle run. Keep them in the heap instead.
-    mallopt(M_MMAP_THRESHOLD, 1 << 30);
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
-#endif
 
     Info<< "Coupling to the DEM (" << couplingDict_().objectPath() << ")"
         << endl;
