@@ -772,6 +772,10 @@ void Foam::demCoupling::particleCloud::printTimingSplit() const
         active() ? exchange_->nTotal() : 0,
         particles_.size()
     );
+    if (active())
+    {
+        exchange_->printTraffic();
+    }
 }
 
 

@@ -6,6 +6,8 @@
 #include "addToRunTimeSelectionTable.H"
 #include "Pstream.H"
 #include <mpi.h>
+#include <algorithm>
+#include <vector>
 
 namespace Foam
 {
@@ -22,6 +24,11 @@ namespace particleExchanges
 
 namespace
 {
+    // Message tags on the exchange's own communicator
+    constexpr int distributeTag = 1;
+    constexpr int backTag = 2;
+    constexpr int forwardTag = 3;
+
     // Displacements of consecutive blocks of counts[r]*width values
     Foam::List<int> blockOffsets(const Foam::List<int>& counts, const int width)
     {
@@ -63,12 +70,17 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
     sendCounts_(),
     recvCounts_(),
     recvOffsets_(),
-    nOwned_(0)
+    nOwned_(0),
+    sendTo_(),
+    recvFrom_(),
+    comm_(MPI_COMM_NULL)
 {
+    countsTraffic_ = true;
     if (!Pstream::parRun())
     {
         return;
     }
+    MPI_Comm_dup(solverComm(), &comm_);
     // Every rank's mesh box and cell-centre box
     const boundBox local(meshReachBox(mesh));
     const boundBox centres(cellCentreReachBox(mesh));
@@ -83,7 +95,7 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
     std::vector<double> all(12*nRanks);
     MPI_Allgather
     (
-        mine, 12, MPI_DOUBLE, all.data(), 12, MPI_DOUBLE, solverComm()
+        mine, 12, MPI_DOUBLE, all.data(), 12, MPI_DOUBLE, comm_
     );
     procBounds_.setSize(nRanks);
     centreBounds_.setSize(nRanks);
@@ -98,7 +110,64 @@ Foam::demCoupling::particleExchanges::manyToMany::manyToMany
 }
 
 
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::particleExchanges::manyToMany::~manyToMany()
+{
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (comm_ != MPI_COMM_NULL && !finalized)
+    {
+        MPI_Comm_free(&comm_);
+    }
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::demCoupling::particleExchanges::manyToMany::exchangeBlocks
+(
+    const labelList& to,
+    const double* send,
+    const List<int>& sendN,
+    const List<int>& sendAt,
+    const labelList& from,
+    double* received,
+    const List<int>& recvN,
+    const List<int>& recvAt,
+    const int tag
+) const
+{
+    const int me = Pstream::myProcNo();
+    std::vector<MPI_Request> requests;
+    requests.reserve(to.size() + from.size());
+    for (const label r : from)
+    {
+        requests.emplace_back();
+        MPI_Irecv
+        (
+            received + recvAt[r], recvN[r], MPI_DOUBLE, r, tag, comm_,
+            &requests.back()
+        );
+    }
+    for (const label r : to)
+    {
+        requests.emplace_back();
+        MPI_Isend
+        (
+            send + sendAt[r], sendN[r], MPI_DOUBLE, r,
+            tag, comm_, &requests.back()
+        );
+        ++messagesSent_;
+        bytesSent_ += sizeof(double)*sendN[r];
+    }
+    std::copy
+    (
+        send + sendAt[me], send + sendAt[me] + sendN[me], received + recvAt[me]
+    );
+    MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+}
+
 
 Foam::scalarList
 Foam::demCoupling::particleExchanges::manyToMany::backToOwners
@@ -114,12 +183,13 @@ Foam::demCoupling::particleExchanges::manyToMany::backToOwners
     const List<int> recvN(times(sendCounts_, width));
     const List<int> recvAt(blockOffsets(sendCounts_, width));
 
+    // to the ranks this one received particles from, from those it sent
+    // particles to
     scalarList received(recvAt.last() + recvN.last());
-    MPI_Alltoallv
+    exchangeBlocks
     (
-        values.cdata(), sendN.cdata(), sendAt.cdata(), MPI_DOUBLE,
-        received.data(), recvN.cdata(), recvAt.cdata(), MPI_DOUBLE,
-        solverComm()
+        recvFrom_, values.cdata(), sendN, sendAt,
+        sendTo_, received.data(), recvN, recvAt, backTag
     );
 
     scalarList owned(width*nOwned_, identity(op));
@@ -198,53 +268,116 @@ void Foam::demCoupling::particleExchanges::manyToMany::distribute
 
     sendIndices_.setSize(nRanks);
     sendCounts_.setSize(nRanks);
+    DynamicList<label> sendTo;
     forAll(dest, r)
     {
         sendIndices_[r].transfer(dest[r]);
         sendCounts_[r] = sendIndices_[r].size();
-    }
-    recvCounts_.setSize(nRanks);
-    MPI_Alltoall
-    (
-        sendCounts_.cdata(), 1, MPI_INT, recvCounts_.data(), 1, MPI_INT,
-        solverComm()
-    );
-    recvOffsets_ = blockOffsets(recvCounts_, 1);
-    const label nHeld = recvOffsets_.last() + recvCounts_.last();
-
-    const List<int> sendN(times(sendCounts_, nPacked));
-    const List<int> sendAt(blockOffsets(sendCounts_, nPacked));
-    const List<int> recvN(times(recvCounts_, nPacked));
-    const List<int> recvAt(blockOffsets(recvCounts_, nPacked));
-
-    std::vector<double> send(sendAt.last() + sendN.last());
-    {
-        double* s = send.data();
-        for (const labelList& indices : sendIndices_)
+        if (r != me && sendCounts_[r] > 0)
         {
-            for (const label i : indices)
+            sendTo.append(r);
+        }
+    }
+    sendTo_.transfer(sendTo);
+    ++nDistributed_;
+
+    // Each partner's particles, packed
+    List<std::vector<double>> send(nRanks);
+    forAll(sendIndices_, r)
+    {
+        send[r].resize(nPacked*sendCounts_[r]);
+        double* b = send[r].data();
+        for (const label i : sendIndices_[r])
+        {
+            pack(owned, i, b);
+            b += nPacked;
+        }
+    }
+
+    // Sparse exchange without a count exchange (NBX): synchronous sends,
+    // which complete only once received; receive whatever arrives; when
+    // this rank's sends are all received, enter a non-blocking barrier;
+    // once every rank has entered it, every message has been received
+    List<std::vector<double>> received(nRanks);
+    received[me].swap(send[me]);
+    std::vector<MPI_Request> sends(sendTo_.size());
+    forAll(sendTo_, k)
+    {
+        const label r = sendTo_[k];
+        MPI_Issend
+        (
+            send[r].data(), send[r].size(), MPI_DOUBLE, r, distributeTag,
+            comm_, &sends[k]
+        );
+        ++messagesSent_;
+        bytesSent_ += sizeof(double)*send[r].size();
+    }
+    DynamicList<label> recvFrom;
+    MPI_Request barrier = MPI_REQUEST_NULL;
+    bool inBarrier = false;
+    for (;;)
+    {
+        int arrived = 0;
+        MPI_Status status;
+        MPI_Iprobe(MPI_ANY_SOURCE, distributeTag, comm_, &arrived, &status);
+        if (arrived)
+        {
+            int n = 0;
+            MPI_Get_count(&status, MPI_DOUBLE, &n);
+            const label r = status.MPI_SOURCE;
+            received[r].resize(n);
+            MPI_Recv
+            (
+                received[r].data(), n, MPI_DOUBLE, r, distributeTag, comm_,
+                MPI_STATUS_IGNORE
+            );
+            recvFrom.append(r);
+        }
+        else if (inBarrier)
+        {
+            int done = 0;
+            MPI_Test(&barrier, &done, MPI_STATUS_IGNORE);
+            if (done)
             {
-                pack(owned, i, s);
-                s += nPacked;
+                break;
+            }
+        }
+        else
+        {
+            int sent = 0;
+            MPI_Testall(sends.size(), sends.data(), &sent, MPI_STATUSES_IGNORE);
+            if (sent)
+            {
+                MPI_Ibarrier(comm_, &barrier);
+                inBarrier = true;
             }
         }
     }
-    std::vector<double> received(nPacked*nHeld);
-    MPI_Alltoallv
-    (
-        send.data(), sendN.cdata(), sendAt.cdata(), MPI_DOUBLE,
-        received.data(), recvN.cdata(), recvAt.cdata(), MPI_DOUBLE,
-        solverComm()
-    );
+    Foam::sort(recvFrom);
+    recvFrom_.transfer(recvFrom);
+
+    // Held: the blocks in source-rank order
+    recvCounts_.setSize(nRanks);
+    forAll(received, r)
+    {
+        recvCounts_[r] = received[r].size()/nPacked;
+    }
+    recvOffsets_ = blockOffsets(recvCounts_, 1);
+    const label nHeld = recvOffsets_.last() + recvCounts_.last();
 
     particles.resize(nHeld);
-    for (label i = 0; i < nHeld; ++i)
+    forAll(received, r)
     {
-        unpack(&received[nPacked*i], particles, i);
+        const double* b = received[r].data();
+        for (label i = 0; i < recvCounts_[r]; ++i)
+        {
+            unpack(b, particles, recvOffsets_[r] + i);
+            b += nPacked;
+        }
     }
 
     int n = nOwned_, total = 0;
-    MPI_Allreduce(&n, &total, 1, MPI_INT, MPI_SUM, solverComm());
+    MPI_Allreduce(&n, &total, 1, MPI_INT, MPI_SUM, comm_);
     nTotal_ = total;
 }
 
@@ -284,11 +417,10 @@ void Foam::demCoupling::particleExchanges::manyToMany::combine
             }
         }
     }
-    MPI_Alltoallv
+    exchangeBlocks
     (
-        send.cdata(), sendN.cdata(), sendAt.cdata(), MPI_DOUBLE,
-        values.data(), recvN.cdata(), recvAt.cdata(), MPI_DOUBLE,
-        solverComm()
+        sendTo_, send.cdata(), sendN, sendAt,
+        recvFrom_, values.data(), recvN, recvAt, forwardTag
     );
 }
 

@@ -28,7 +28,11 @@ Foam::demCoupling::particleExchange::particleExchange()
 :
     nTotal_(0),
     seconds_(0),
-    clock_()
+    clock_(),
+    countsTraffic_(false),
+    messagesSent_(0),
+    bytesSent_(0),
+    nDistributed_(0)
 {}
 
 
@@ -124,6 +128,24 @@ void Foam::demCoupling::particleExchange::copyOwned
 {
     particles = owned;
     nTotal_ = owned.size();
+}
+
+
+void Foam::demCoupling::particleExchange::printTraffic() const
+{
+    if (!Pstream::parRun() || !countsTraffic_)
+    {
+        return;
+    }
+    const scalar steps = max(nDistributed_, label(1));
+    const scalar messages = messagesSent_/steps;
+    const scalar kB = bytesSent_/steps/1024;
+    Info<< "Exchange traffic per rank and coupling step (to other ranks): "
+        << "messages min " << returnReduce(messages, minOp<scalar>())
+        << ", max " << returnReduce(messages, maxOp<scalar>())
+        << "; kB min " << returnReduce(kB, minOp<scalar>())
+        << ", max " << returnReduce(kB, maxOp<scalar>())
+        << " (" << Pstream::nProcs() << " ranks)" << endl;
 }
 
 
