@@ -22,7 +22,10 @@
 #     not for a complete failure); 10, 10 mm/s at 10, 20 s and 50, 40 mm/s
 #     at 80, 90 s rise at the end (holds for a complete failure, the seed's
 #     F4, not for a rebalanced run); in each case exactly 4 peaks are
-#     found (their count, not their times, is checked).
+#     found (their count, not their times, is checked),
+#   - -demStep 0.3 sets the case's DEM step to 0.3 of the 20 mm grains'
+#     Rayleigh time (1.68e-4 s) where the default run has 1e-4 s, and
+#     -demStep 0.7 stops with the option named.
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy
@@ -216,6 +219,27 @@ mustFail rateShapeCheck "$PWD/failureFades" "a complete failure judged by fading
 matrixChecks "$PWD"
 rankingCheck "$PWD"
 rateShapeCheck "$PWD"
+
+# -demStep: the case's DEM step is the fraction given of the 20 mm grains'
+# Rayleigh time (5.6e-4 s: 0.3 -> 1.68e-4 s), the run above kept the
+# tutorial's 1e-4 s (the negative control: the same read on it), and a
+# fraction above 0.5 stops with the option named
+demDtOf() { sed -n 's/^variable *demDt *index *//p' "$1/DEM/in.case"; }
+./Allrun -scenario C4 -demStep 0.3 -tag step30 -endTime 1 -setupOnly \
+    > log.Allrun.step30 2>&1 || { tail -5 log.Allrun.step30; fail "Allrun -demStep 0.3 -setupOnly failed"; }
+step30=$(demDtOf C4.small.step30)
+stepDefault=$(demDtOf "$case")
+requireNumber "DEM step with -demStep 0.3" "$step30"
+requireNumber "DEM step of the default run" "$stepDefault"
+check "DEM step with -demStep 0.3" "$step30" 'v > 1.679e-4 && v < 1.681e-4' \
+    "-demStep 0.3 gave a DEM step of $step30 s, not 0.3 x 5.6e-4 = 1.68e-4 s"
+check "DEM step of the default run (negative control)" "$stepDefault" \
+    '!(v > 1.679e-4 && v < 1.681e-4) && v == 1e-4' \
+    "the default run's DEM step is $stepDefault s, not 1e-4 s"
+./Allrun -scenario C4 -demStep 0.7 -tag step70 -setupOnly > log.Allrun.step70 2>&1 \
+    && fail "-demStep 0.7 ran (log.Allrun.step70)"
+grep -q "^Allrun: -demStep needs" log.Allrun.step70 \
+    || fail "-demStep 0.7 did not stop with the option named (log.Allrun.step70)"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"

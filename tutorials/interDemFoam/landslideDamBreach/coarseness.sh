@@ -40,8 +40,13 @@ cd "${0%/*}" || exit                                # Run from this directory
 #   cellPoint  C2, the fluid velocity at each grain's centre (fluidVelocity
 #            cellPoint) instead of its virtual sphere's average
 #   FcellPoint F2, the same
+#   dem30, dem45   C2 with the DEM step at 30 % and 45 % of the 20 mm
+#            grains' Rayleigh time (the tutorial: 18 %, 1e-4 s), to 80 s
+#            (where the tutorial's C2 and F2 ended)
+#   Fdem30, Fdem36, Fdem45   F2 at 30 %, 36 % (1e-4 s, the seed's step)
+#            and 45 % of the 10 mm grains' Rayleigh time, to 80 s
 #------------------------------------------------------------------------------
-all="dry dryCo045 Fdry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift cellPoint FcellPoint"
+all="dry dryCo045 Fdry smooth w02 divided centre lift Fcoarse cell25 semiCo1 semiCo2 ranks2 co045 Fcentre Fco045 Flift cellPoint FcellPoint dem30 dem45 Fdem30 Fdem36 Fdem45"
 variants=${*:-$all}
 
 # the force models of the lift variants (the tutorial's plus both lifts)
@@ -68,6 +73,11 @@ options()
         Flift)   echo "-scenario F2 -forces \"$liftForces\"" ;;
         cellPoint)  echo "-scenario C2 -fluidVelocity cellPoint" ;;
         FcellPoint) echo "-scenario F2 -fluidVelocity cellPoint" ;;
+        dem30)   echo "-scenario C2 -demStep 0.3 -endTime 80" ;;
+        dem45)   echo "-scenario C2 -demStep 0.45 -endTime 80" ;;
+        Fdem30)  echo "-scenario F2 -demStep 0.3 -endTime 80" ;;
+        Fdem36)  echo "-scenario F2 -demStep 0.357 -endTime 80" ;;
+        Fdem45)  echo "-scenario F2 -demStep 0.45 -endTime 80" ;;
         *) return 1 ;;
     esac
 }

@@ -19,6 +19,9 @@
                                               the findings, Figs. 8-11
     damBreachAnalysis.py coarseness DIR SCALE CASE...
                                               the variants' chart
+    damBreachAnalysis.py demStep DIR SCALE    C2 and F2 at each DEM step
+                                              against CPU time (from DIR's
+                                              coarseness.SCALE.dat)
     damBreachAnalysis.py shields DIR SCALE CASE...
                                               the Shields number on the
                                               downstream face during

@@ -46,6 +46,7 @@ COMMANDS = {
     'ended': (1, ended_command),
     'matrix': (3, lambda a: matrix.main(a[0], a[1], a[2:])),
     'coarseness': (3, lambda a: coarseness.coarseness(a[0], a[1], a[2:])),
+    'demStep': (2, lambda a: coarseness.dem_step(a[0], a[1])),
     'shields': (3, lambda a: shields.main(a[0], a[1], a[2:])),
     'deposit': (1, deposit_command),
     'compare': (2, lambda a: compare.compare(a[0], a[1:])),

@@ -36,6 +36,11 @@ VARIANTS = {
     'FcellPoint': 'fluid velocity at the grain centre (fluidVelocity cellPoint)',
     'fluct': 'turbulent fluctuations (velocityFluctuation 0.75, 0.2 s)',
     'fluct06': 'turbulent fluctuations (velocityFluctuation 0.6, 0.2 s)',
+    'dem30': 'DEM step 30 % of the 20 mm grains\' Rayleigh time (1.68e-4 s), to 80 s',
+    'dem45': 'DEM step 45 % of the 20 mm grains\' Rayleigh time (2.52e-4 s), to 80 s',
+    'Fdem30': 'DEM step 30 % of the 10 mm grains\' Rayleigh time (8.4e-5 s), to 80 s',
+    'Fdem36': 'DEM step 1e-4 s, the seed\'s (36 % of the 10 mm grains\' Rayleigh time), to 80 s',
+    'Fdem45': 'DEM step 45 % of the 10 mm grains\' Rayleigh time (1.26e-4 s), to 80 s',
 }
 
 
@@ -169,4 +174,71 @@ def coarseness(out, scale, cases):
     print(open(path).read())
     coarseness_chart(rows, os.path.join(out, 'coarseness.%s.png' % scale))
     print('Written: %s/coarseness.%s.dat, .png' % (out, scale))
+    return 0
+
+
+# The DEM-step variants and the step of each, as a % of the smallest
+# grains' Rayleigh time (the tutorial: 18 %), and each scenario's spread
+# pair (the tutorial at maxCo 0.45)
+DEM_STEPS = {'tutorial': 18, 'dem30': 30, 'dem45': 45,
+             'Fdem30': 30, 'Fdem36': 36, 'Fdem45': 45}
+SPREAD = {'C2': 'co045', 'F2': 'Fco045'}
+
+
+def dem_step(out, scale):
+    """Residual height and overtopping time of C2 and F2 at each DEM step
+    against CPU time, with the spread of the numerics (the tutorial against
+    its maxCo 0.45 pair) as a band around the tutorial's value; from
+    coarseness.<scale>.dat (run coarseness first): demStep.<scale>.png"""
+    path = os.path.join(out, 'coarseness.%s.dat' % scale)
+    rows = {}
+    for line in open(path):
+        if line.startswith('#') or not line.strip():
+            continue
+        w = line.split()
+        rows[(w[0], w[1])] = (float(w[2]), float(w[3]), float(w[5]))
+    plt = pyplot()
+    fig, ax = plt.subplots(1, 2, figsize=(13, 5.5))
+    print('# scenario step_% Hres_m t_overtop_s cpu_s  '
+          '(spread: the tutorial against its maxCo 0.45 pair)')
+    for scenario, colour in (('C2', 'tab:blue'), ('F2', 'tab:red')):
+        ref = rows.get((scenario, 'tutorial'))
+        pair = rows.get((scenario, SPREAD[scenario]))
+        if ref is None:
+            raise SystemExit('demStep: no tutorial row for %s in %s'
+                             % (scenario, path))
+        points = sorted((DEM_STEPS[v], rows[(s, v)]) for (s, v) in rows
+                        if s == scenario and v in DEM_STEPS)
+        for k in (0, 1):
+            if pair is not None:
+                half = abs(ref[k] - pair[k])
+                scale_k = 1000 if k == 0 else 1
+                ax[k].axhspan(scale_k*(ref[k] - half), scale_k*(ref[k] + half),
+                              color=colour, alpha=0.12)
+            xs = [p[1][2]/60 for p in points]
+            ys = [(1000 if k == 0 else 1)*p[1][k] for p in points]
+            ax[k].plot(xs, ys, 'o-', color=colour, label=scenario)
+            for p, x, y in zip(points, xs, ys):
+                ax[k].annotate('%d %%' % p[0], (x, y), textcoords='offset points',
+                               xytext=(5, 5), fontsize=8, color=colour)
+        for p in points:
+            print('%s %d %.4f %.1f %.0f' % (scenario, p[0], p[1][0], p[1][1],
+                                            p[1][2]))
+        if pair is not None:
+            print('%s spread: %.4f m, %.1f s' % (scenario, abs(ref[0] - pair[0]),
+                                                  abs(ref[1] - pair[1])))
+    ax[0].set(xlabel='CPU time of the run to 80 s [min]',
+              ylabel='residual dam height [mm]',
+              title='Residual height against cost, DEM step as % of the '
+                    'Rayleigh time')
+    ax[1].set(xlabel='CPU time of the run to 80 s [min]',
+              ylabel='overtopping time [s] (-1: none)',
+              title='Overtopping time (band: the tutorial +- its maxCo 0.45 pair)')
+    for k in (0, 1):
+        ax[k].legend()
+        ax[k].margins(x=0.12, y=0.12)
+    fig.tight_layout()
+    png = os.path.join(out, 'demStep.%s.png' % scale)
+    fig.savefig(png, dpi=110)
+    print('Written: %s' % png)
     return 0

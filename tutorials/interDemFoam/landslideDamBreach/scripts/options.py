@@ -33,7 +33,7 @@ ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
 VARIANTS = ('-width, -cellSize, -voidFraction, -forces, -fluidVelocity, '
             '-fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
-            '-semiImplicitAlpha, -maxTime')
+            '-semiImplicitAlpha, -maxTime, -demStep')
 
 
 class OptionError(Exception):
@@ -78,7 +78,8 @@ def check_run_length(o, s):
 def is_variant(o):
     return any(o[k] for k in ('width', 'voidFraction', 'forces',
                               'fluidVelocity', 'fluctuation',
-                              'minVoidFraction', 'grading', 'maxTime')) \
+                              'minVoidFraction', 'grading', 'maxTime',
+                              'demStep')) \
         or o['cellSize'] != '0.05' or o['bed'] != 'rough' \
         or o['turbulence'] != 'laminar' \
         or o['maxCo'] != '0.5' or o['semiImplicitAlpha'] == 'yes'
@@ -200,6 +201,10 @@ def check(o):
                           "3's particle-geometry values) or pocket (rolling "
                           "friction 0.577), got '%s'" % o['bed'])
     check_run_length(o, s)
+    if o['demStep'] and not number(o['demStep'], lambda f: 0 < f <= 0.5):
+        raise OptionError("-demStep needs the DEM step as a fraction of the "
+                          "smallest grains' Rayleigh time, > 0 and at most "
+                          "0.5 (default 0.18), got '%s'" % o['demStep'])
     if is_variant(o) and not re.fullmatch('[A-Za-z0-9_-]+', o['tag']):
         raise OptionError("a variant (%s) needs -tag NAME (letters, digits, "
                           "_ or -), got '%s'" % (VARIANTS, o['tag']))

@@ -30,6 +30,7 @@ grading=""
 bed=rough
 maxTimeOption=""
 demGrid="* * *"
+demStep=""
 resume=no
 
 # parseOptions "$@": the command line into the variables above; exits on an
@@ -61,10 +62,11 @@ parseOptions()
             -semiImplicitAlpha) semiImplicitAlpha=yes ;;
             -maxTime)  maxTimeOption="$2"; shift ;;
             -demGrid)  demGrid="$2"; shift ;;
+            -demStep)  demStep="$2"; shift ;;
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep)"; exit 1 ;;
         esac
         shift
     done
@@ -89,7 +91,7 @@ checkOptions()
         fluctuation="$fluctuation" turbulence="$turbulence" \
         minVoidFraction="$minVoidFraction" \
         grading="$grading" bed="$bed" maxTime="$maxTimeOption" \
-        demGrid="$demGrid" resume="$resume") \
+        demGrid="$demGrid" demStep="$demStep" resume="$resume") \
         || { echo "$settings"; exit 1; }
     eval "$settings"
 }

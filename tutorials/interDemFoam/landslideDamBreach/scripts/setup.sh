@@ -24,16 +24,23 @@ EOF
 
 # The grading (in.material.<name>) of material $1 at this scale and the DEM
 # step it needs (at most 20 % of the Rayleigh time of the smallest grains,
-# Table 3's shear modulus: 20 mm 5.6e-4 s, 10 mm 2.8e-4 s, 5 mm 1.4e-4 s)
+# Table 3's shear modulus: 20 mm 5.6e-4 s, 15 mm 4.2e-4 s, 10 mm 2.8e-4 s,
+# 5 mm 1.4e-4 s); $2 = run: the case's step, -demStep's fraction of that
+# Rayleigh time when given (the dam is always poured at the default)
 setMaterial()
 {
     material=$1
+    local rayleigh
     case "$scale/$material" in
-        */C)     materialFile=C;     demDt=1e-4 ;;     # 20-40 mm: 18 %
-        small/F) materialFile=F;     demDt=5e-5 ;;     # 10-40 mm: 18 %
-        full/F)  materialFile=Ffull; demDt=2.5e-5 ;;   # 5-50 mm: 18 %
-        */Fcoarse) materialFile=Fcoarse; demDt=7.5e-5 ;; # 15-40 mm: 18 %
+        */C)     materialFile=C;     demDt=1e-4;   rayleigh=5.6e-4 ;; # 20-40 mm: 18 %
+        small/F) materialFile=F;     demDt=5e-5;   rayleigh=2.8e-4 ;; # 10-40 mm: 18 %
+        full/F)  materialFile=Ffull; demDt=2.5e-5; rayleigh=1.4e-4 ;; # 5-50 mm: 18 %
+        */Fcoarse) materialFile=Fcoarse; demDt=7.5e-5; rayleigh=4.2e-4 ;; # 15-40 mm: 18 %
     esac
+    if [ "$2" = run ] && [ -n "$demStep" ]
+    then
+        demDt=$(/usr/bin/python3 -c "print('%.3g' % ($demStep*$rayleigh))")
+    fi
     damName=$material.$scale
     [ "$scale" = small ] && [ "$width" != 0.1 ] && damName=$damName.w$width
     damFile=DEM/dam.$damName.restart
@@ -188,7 +195,7 @@ return 0
 setupCase()
 {
 buildDam "$material" || return 1
-setMaterial "$material"
+setMaterial "$material" run
 rm -rf "$dir"
 mkdir -p "$dir"/DEM "$dir"/post
 cp -r 0.orig constant system "$dir"/
