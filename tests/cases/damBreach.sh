@@ -25,7 +25,12 @@
 #     found (their count, not their times, is checked),
 #   - -demStep 0.3 sets the case's DEM step to 0.3 of the 20 mm grains'
 #     Rayleigh time (1.68e-4 s) where the default run has 1e-4 s, and
-#     -demStep 0.7 stops with the option named.
+#     -demStep 0.7 stops with the option named;
+#   - -sample b (the matrix's second sample) sets maxCo 0.45 and the DEM
+#     step 0.162 of the Rayleigh time (9.07e-5 s) in the case C4.small.b;
+#     the two-sample findings hold only where both samples hold (verdict()
+#     on the six pairs of words), and the matrix with --second writes both
+#     samples' matrix and phases and holds nothing with seven runs missing.
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy
@@ -202,6 +207,53 @@ EOF
     [ -z "$wrong" ] || fail "rate_peaks judges wrongly: $(echo $wrong)"
 }
 
+# verdictCheck <dir>: two samples (matrix --second): a finding "holds" only
+# where it holds in both; in one only it says which; the one-sample words
+# stay as they were
+verdictCheck()
+{
+    local wrong
+    wrong=$(/usr/bin/python3 - "$1" <<'EOF'
+import sys
+sys.path.insert(0, sys.argv[1])
+from damBreach import matrix as m
+cases = [((True, True), 'holds'), ((True, False), 'holds in one sample only (a)'),
+         ((False, True), 'holds in one sample only (b)'),
+         ((False, False), 'does not hold'), ((True, None), 'holds'),
+         ((False, None), 'does not hold')]
+for (a, b), expected in cases:
+    got = m.verdict(a, b, 'holds')
+    if got != expected:
+        print('%s %s -> %s' % (a, b, got))
+EOF
+) || fail "the verdict check could not run: $wrong"
+    [ -z "$wrong" ] || fail "two samples judged wrongly: $(echo $wrong)"
+}
+
+# twoSampleChecks: the matrix with a second sample (this run again) writes
+# both samples' matrix and phases, and with seven runs missing still holds
+# no finding
+twoSampleChecks()
+{
+    local out=matrix.twoSamples count
+    rm -rf "$out"
+    /usr/bin/python3 "$PWD"/damBreachAnalysis.py matrix "$out" small "$case" \
+        --second "$case" > "$out.log" 2>&1 \
+        || { tail -5 "$out.log"; fail "the two-sample matrix analysis failed ($out.log)"; }
+    for f in matrix.small.dat matrix.small.b.dat phases.small.dat phases.small.b.dat
+    do
+        [ "$(grep -c '^C4 ' "$out/$f")" = 1 ] || fail "no C4 row in $out/$f"
+    done
+    count=$(grep '^# [0-9]* of 12 hold' "$out/findings.small.txt")
+    case "$count" in
+        "# 0 of 12 hold: 7 of the eight runs missing"*) ;;
+        *) fail "two samples, seven runs missing: the count reads '$count'" ;;
+    esac
+}
+
+breakAnalysis bothSamples matrix 's/^    if ok_b is None or ok_a == ok_b:$/    if True:/' '    if True:'
+mustFail verdictCheck "$PWD/bothSamples" "one sample enough to hold" \
+    "two samples judged wrongly"
 breakAnalysis ignoreMissing matrix 's/^\(    missing = \).*/\1[]/' '    missing = []'
 mustFail matrixChecks "$PWD/ignoreMissing" "the missing runs ignored" \
     "findings count reads"
@@ -217,6 +269,8 @@ breakAnalysis failureFades findings 's/^    if failed:$/    if False:/' '    if 
 mustFail rateShapeCheck "$PWD/failureFades" "a complete failure judged by fading" \
     "rate_peaks judges wrongly"
 matrixChecks "$PWD"
+verdictCheck "$PWD"
+twoSampleChecks
 rankingCheck "$PWD"
 rateShapeCheck "$PWD"
 
@@ -236,6 +290,19 @@ check "DEM step with -demStep 0.3" "$step30" 'v > 1.679e-4 && v < 1.681e-4' \
 check "DEM step of the default run (negative control)" "$stepDefault" \
     '!(v > 1.679e-4 && v < 1.681e-4) && v == 1e-4' \
     "the default run's DEM step is $stepDefault s, not 1e-4 s"
+# -sample b: the matrix's second sample, every step 10 % shorter, in its
+# own case C4.small.b: maxCo 0.45 (the default run's 0.5 is the negative
+# control) and the DEM step 0.9 x 0.18 x 5.6e-4 = 9.07e-5 s
+./Allrun -scenario C4 -sample b -endTime 1 -setupOnly > log.Allrun.sampleB 2>&1 \
+    || { tail -5 log.Allrun.sampleB; fail "Allrun -sample b -setupOnly failed"; }
+coOf() { foamDictionary -entry maxCo -value "$1/system/controlDict"; }
+requireNumber "maxCo of -sample b" "$(coOf C4.small.b)"
+check "maxCo of -sample b" "$(coOf C4.small.b)" 'v == 0.45' \
+    "-sample b gave maxCo $(coOf C4.small.b), not 0.45"
+check "maxCo of the default run (negative control)" "$(coOf "$case")" '!(v == 0.45)' \
+    "the default run's maxCo is $(coOf "$case")"
+check "DEM step of -sample b" "$(demDtOf C4.small.b)" 'v > 9.06e-5 && v < 9.08e-5' \
+    "-sample b gave a DEM step of $(demDtOf C4.small.b) s, not 9.07e-5 s"
 ./Allrun -scenario C4 -demStep 0.7 -tag step70 -setupOnly > log.Allrun.step70 2>&1 \
     && fail "-demStep 0.7 ran (log.Allrun.step70)"
 grep -q "^Allrun: -demStep needs" log.Allrun.step70 \

@@ -14,9 +14,12 @@
                                               the breach has ended (H and [E]
                                               level over the window) or the
                                               run has reached maxTime
-    damBreachAnalysis.py matrix DIR SCALE CASE...
+    damBreachAnalysis.py matrix DIR SCALE CASE... [--second CASE...]
                                               all eight scenarios: the matrix,
-                                              the findings, Figs. 8-11
+                                              the findings, Figs. 8-11 (with
+                                              --second, the second sample's
+                                              matrix too and the findings on
+                                              both)
     damBreachAnalysis.py coarseness DIR SCALE CASE...
                                               the variants' chart
     damBreachAnalysis.py demStep DIR SCALE    C2 and F2 at each DEM step

@@ -35,7 +35,7 @@ fi
 # The runs $dirs of the scenarios $scenarios side by side
 # (compare.<scale>[.<tag>].png/.txt); with all eight the matrix, the
 # findings, Figs. 8-11 and the Shields numbers in results/ (a variant's in
-# results/<tag>/)
+# results/<tag>/; with -sample b both samples' matrices and their findings)
 analyseTogether()
 {
 /usr/bin/python3 damBreachAnalysis.py compare compare.$scale${tag:+.$tag} $dirs \
@@ -43,13 +43,29 @@ analyseTogether()
 echo "Allrun: side by side in compare.$scale${tag:+.$tag}.png, compare.$scale${tag:+.$tag}.txt"
 if [ "$(echo $scenarios | tr ' ' '\n' | sort | tr '\n' ' ')" = "C1 C2 C3 C4 F1 F2 F3 F4 " ]
 then
-    # a variant's matrix in results/<tag>/, beside the tutorial's own
-    resultsDir=results${tag:+/$tag}
+    # a variant's matrix in results/<tag>/, beside the tutorial's own; the
+    # second sample (-sample b) beside the first, the findings on both
+    resultsDir=results${firstTag:+/$firstTag}
     mkdir -p "$resultsDir"
-    /usr/bin/python3 damBreachAnalysis.py matrix "$resultsDir" $scale $dirs \
-        || { echo "Allrun: the matrix analysis failed"; exit 1; }
-    # where the runs sit on the bedload chart (docs/erosion.md)
-    /usr/bin/python3 damBreachAnalysis.py shields "$resultsDir" $scale $dirs \
+    if [ "$sample" = b ]
+    then
+        local sc firstDirs=""
+        for sc in $scenarios
+        do
+            firstDirs="$firstDirs $sc.$scale${firstTag:+.$firstTag}"
+            [ -f "$sc.$scale${firstTag:+.$firstTag}/damBreach.summary" ] \
+                || { echo "Allrun: -sample b: the first sample's $sc.$scale${firstTag:+.$firstTag} has not run (./Allrun -scenario all${firstTag:+ -tag $firstTag} first)"; exit 1; }
+        done
+        /usr/bin/python3 damBreachAnalysis.py matrix "$resultsDir" $scale \
+            $firstDirs --second $dirs \
+            || { echo "Allrun: the matrix analysis failed"; exit 1; }
+    else
+        /usr/bin/python3 damBreachAnalysis.py matrix "$resultsDir" $scale $dirs \
+            || { echo "Allrun: the matrix analysis failed"; exit 1; }
+    fi
+    # where the runs sit on the bedload chart (docs/erosion.md; the first
+    # sample's)
+    [ "$sample" = b ] || /usr/bin/python3 damBreachAnalysis.py shields "$resultsDir" $scale $dirs \
         || { echo "Allrun: the Shields analysis failed"; exit 1; }
 fi
 }

@@ -28,6 +28,7 @@ SCALES = {
                  defaultLake='', defaultEnd='200', maxEnd='600'),
 }
 PIECE_LENGTH = '20'     # s, the pieces after the first
+DEFAULT_DEM_STEP = 0.18  # of the smallest grains' Rayleigh time (setup.sh)
 # all eight: the long F runs early, so that two cores stay busy to the end
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
@@ -186,6 +187,22 @@ def check_ranks(o):
                           "...), got '%s'" % o['jobs'])
 
 
+def check_sample(o, s):
+    """-sample: a (the run as set) or b, the second sample of the matrix:
+    every step 10 % shorter (maxCo and the DEM step x 0.9), in the cases
+    <scenario>.<scale>[.<tag>].b; firstTag names the first sample's."""
+    s['maxCo'], s['demStep'], s['tag'] = o['maxCo'], o['demStep'], o['tag']
+    s['firstTag'] = o['tag']
+    if o['sample'] not in ('a', 'b'):
+        raise OptionError("-sample: use a (the run as set) or b (the "
+                          "matrix's second sample, every step 10 %% "
+                          "shorter), got '%s'" % o['sample'])
+    if o['sample'] == 'b':
+        s['maxCo'] = '%g' % (0.9*float(o['maxCo']))
+        s['demStep'] = '%g' % (0.9*float(o['demStep'] or DEFAULT_DEM_STEP))
+        s['tag'] = o['tag'] + '.b' if o['tag'] else 'b'
+
+
 def check(o):
     """The settings of the options o, or OptionError at the first wrong
     one (in the order Allrun has always checked them)."""
@@ -223,6 +240,7 @@ def check(o):
         s['lakeLevel'] = o['lakeLevel']
     check_scenarios(o, s)
     check_ranks(o)
+    check_sample(o, s)
     if o['endTime']:
         if not number(o['endTime'], lambda t: t > 0):
             raise OptionError("-endTime needs a positive time in s, got '%s'"
@@ -242,7 +260,7 @@ def main(argv):
         return 1
     for k in ('scenario', 'width', 'nCells', 'sides', 'yBoundary', 'sideWalls',
               'lakeLevel', 'endTime', 'untilEnded', 'maxEnd', 'pieceLength',
-              'intensity', 'eddyTime'):
+              'intensity', 'eddyTime', 'maxCo', 'demStep', 'tag', 'firstTag'):
         print('%s=%s' % (k, shlex.quote(s[k])))
     return 0
 

@@ -32,6 +32,7 @@ maxTimeOption=""
 demGrid="* * *"
 demStep=""
 resume=no
+sample=a
 
 # parseOptions "$@": the command line into the variables above; exits on an
 # unknown option (or -buildDam without materials)
@@ -63,10 +64,11 @@ parseOptions()
             -maxTime)  maxTimeOption="$2"; shift ;;
             -demGrid)  demGrid="$2"; shift ;;
             -demStep)  demStep="$2"; shift ;;
+            -sample)   sample="$2"; shift ;;
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
         esac
         shift
     done
@@ -91,7 +93,8 @@ checkOptions()
         fluctuation="$fluctuation" turbulence="$turbulence" \
         minVoidFraction="$minVoidFraction" \
         grading="$grading" bed="$bed" maxTime="$maxTimeOption" \
-        demGrid="$demGrid" demStep="$demStep" resume="$resume") \
+        demGrid="$demGrid" demStep="$demStep" resume="$resume" \
+        sample="$sample") \
         || { echo "$settings"; exit 1; }
     eval "$settings"
 }
