@@ -194,3 +194,8 @@ set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEO
 # blow-up region, a missing DEM script
 add_test(case.checkScene "bash" "cases/checkScene.sh")
 set_tests_properties(case.checkScene PROPERTIES LABELS "case;input" TIMEOUT 300)
+
+# The DEM's processor grid chosen from the grains (bin/demGrid, the
+# flagship's -demGrid auto) against LIGGGHTS's own neighbour counts
+add_test(case.demGrid "bash" "cases/demGrid.sh")
+set_tests_properties(case.demGrid PROPERTIES LABELS "case;parallel" TIMEOUT 300)

@@ -30,7 +30,9 @@
 #     step 0.162 of the Rayleigh time (9.07e-5 s) in the case C4.small.b;
 #     the two-sample findings hold only where both samples hold (verdict()
 #     on the six pairs of words), and the matrix with --second writes both
-#     samples' matrix and phases and holds nothing with seven runs missing.
+#     samples' matrix and phases and holds nothing with seven runs missing;
+#   - -parallel 2 writes the DEM grid bin/demGrid chooses from the dam's
+#     grains (-demGrid auto), the serial run LIGGGHTS's "* * *".
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy
@@ -303,6 +305,17 @@ check "maxCo of the default run (negative control)" "$(coOf "$case")" '!(v == 0.
     "the default run's maxCo is $(coOf "$case")"
 check "DEM step of -sample b" "$(demDtOf C4.small.b)" 'v > 9.06e-5 && v < 9.08e-5' \
     "-sample b gave a DEM step of $(demDtOf C4.small.b) s, not 9.07e-5 s"
+# -parallel 2 (-demGrid auto): the case's DEM grid is bin/demGrid's best
+# for the dam's grains on 2 ranks, not LIGGGHTS's "* * *"
+./Allrun -scenario C4 -parallel 2 -tag np2 -endTime 1 -setupOnly > log.Allrun.np2 2>&1 \
+    || { tail -5 log.Allrun.np2; fail "Allrun -parallel 2 -setupOnly failed"; }
+gridOf() { sed -n 's/^variable *demGrid *index *"\(.*\)"$/\1/p' "$1/DEM/in.case"; }
+expected=$(demGrid DEM/dam.C.small.grains 2 --best) || fail "demGrid on DEM/dam.C.small.grains failed"
+[ -n "$expected" ] && [ "$(gridOf C4.small.np2)" = "$expected" ] \
+    || fail "-parallel 2 wrote the DEM grid '$(gridOf C4.small.np2)', demGrid chooses '$expected'"
+[ "$(gridOf "$case")" = "* * *" ] \
+    || fail "the serial run's DEM grid is '$(gridOf "$case")', not LIGGGHTS's \"* * *\""
+echo "-parallel 2: DEM grid $expected"
 ./Allrun -scenario C4 -demStep 0.7 -tag step70 -setupOnly > log.Allrun.step70 2>&1 \
     && fail "-demStep 0.7 ran (log.Allrun.step70)"
 grep -q "^Allrun: -demStep needs" log.Allrun.step70 \

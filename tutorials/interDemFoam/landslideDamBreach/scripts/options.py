@@ -168,7 +168,7 @@ def check_ranks(o):
     if not counted(nProcs):
         raise OptionError("-parallel needs a number of ranks (1, 2, ...), "
                           "got '%s'" % nProcs)
-    if o['demGrid'] != '* * *':
+    if o['demGrid'] not in ('auto', '* * *'):
         w = o['demGrid'].split()
         # (as a number in Python's syntax: no leading zeros)
         ranks = int(nProcs) if re.fullmatch('0+|[1-9][0-9]*', nProcs) else None
@@ -181,7 +181,9 @@ def check_ranks(o):
             raise OptionError(
                 "-demGrid needs three whole numbers of ranks (along the "
                 "flume, across, up) whose product is the -parallel %s ranks, "
-                "e.g. \"1 %s 1\", got '%s'" % (nProcs, nProcs, o['demGrid']))
+                "e.g. \"1 %s 1\", or auto (the default: chosen from the "
+                "dam's grains) or \"* * *\" (LIGGGHTS's choice), got '%s'"
+                % (nProcs, nProcs, o['demGrid']))
     if not counted(o['jobs']):
         raise OptionError("-jobs needs a number of runs side by side (1, 2, "
                           "...), got '%s'" % o['jobs'])

@@ -16,7 +16,7 @@ variable        sideWalls index $sideWalls
 variable        material index $materialFile
 variable        damFile index $2
 variable        demDt index $demDt
-variable        demGrid index "$demGrid"
+variable        demGrid index "${demGrid/auto/* * *}"
 variable        dumpEvery index $(/usr/bin/python3 -c "print(int(round(0.5/$demDt)))")
 variable        vtkEvery index $(/usr/bin/python3 -c "print(int(round(2/$demDt)))")
 EOF
@@ -90,6 +90,30 @@ then
     return 1
 fi
 cp build.$damName/log.grading "${damFile%.restart}.grading"
+cp build.$damName/dam.grains "${damFile%.restart}.grains"
+}
+
+# The DEM's processor grid of a run on $nProcs ranks (-demGrid auto, the
+# default): the grid whose busiest rank computes the fewest neighbour pairs
+# on the dam's grains (bin/demGrid; docs/benchmarks.md, DEM load balance);
+# on one rank, or without the dam's grains (a dam poured before they were
+# kept), LIGGGHTS's choice "* * *"
+chooseDemGrid()
+{
+[ "$demGrid" = auto ] || return 0
+demGrid="* * *"
+[ "$nProcs" -gt 1 ] || return 0
+local grains="${damFile%.restart}.grains" skin
+[ -f "$grains" ] || { [ -f build.$damName/dam.grains ] && cp build.$damName/dam.grains "$grains"; }
+if [ ! -f "$grains" ]
+then
+    echo "Allrun: no $grains (the dam was poured before its grains were kept): the DEM's processor grid is LIGGGHTS's choice; -buildDam $material pours it again, or set -demGrid"
+    return 0
+fi
+skin=$(sed -n 's/^neighbor *\([0-9.eE+-]*\) .*/\1/p' DEM/in.common)
+demGrid=$(demGrid "$grains" "$nProcs" --skin "$skin" --best) \
+    || { echo "Allrun: bin/demGrid failed on $grains"; return 1; }
+echo "Allrun: the DEM's processor grid on $nProcs ranks, from the dam's grains: $demGrid (bin/demGrid)"
 }
 
 # The bed of the case $dir: Table 3's particle-geometry friction (-bed
@@ -196,6 +220,7 @@ setupCase()
 {
 buildDam "$material" || return 1
 setMaterial "$material" run
+chooseDemGrid || return 1
 rm -rf "$dir"
 mkdir -p "$dir"/DEM "$dir"/post
 cp -r 0.orig constant system "$dir"/
