@@ -27,7 +27,8 @@
 #     Rayleigh time (1.68e-4 s) where the default run has 1e-4 s, and
 #     -demStep 0.7 stops with the option named;
 #   - -sample b (the matrix's second sample) sets maxCo 0.45 and the DEM
-#     step 0.162 of the Rayleigh time (9.07e-5 s) in the case C4.small.b;
+#     step 0.9 x 1e-4 = 9e-5 s in the case C4.small.b, and -tag x.b is
+#     refused;
 #     the two-sample findings hold only where both samples hold (verdict()
 #     on the six pairs of words), and the matrix with --second writes both
 #     samples' matrix and phases and holds nothing with seven runs missing;
@@ -294,7 +295,8 @@ check "DEM step of the default run (negative control)" "$stepDefault" \
     "the default run's DEM step is $stepDefault s, not 1e-4 s"
 # -sample b: the matrix's second sample, every step 10 % shorter, in its
 # own case C4.small.b: maxCo 0.45 (the default run's 0.5 is the negative
-# control) and the DEM step 0.9 x 0.18 x 5.6e-4 = 9.07e-5 s
+# control) and the DEM step 0.9 x the default run's 1e-4 s = 9e-5 s; a tag
+# ending in .b is refused (it would name a second sample's cases)
 ./Allrun -scenario C4 -sample b -endTime 1 -setupOnly > log.Allrun.sampleB 2>&1 \
     || { tail -5 log.Allrun.sampleB; fail "Allrun -sample b -setupOnly failed"; }
 coOf() { foamDictionary -entry maxCo -value "$1/system/controlDict"; }
@@ -303,8 +305,12 @@ check "maxCo of -sample b" "$(coOf C4.small.b)" 'v == 0.45' \
     "-sample b gave maxCo $(coOf C4.small.b), not 0.45"
 check "maxCo of the default run (negative control)" "$(coOf "$case")" '!(v == 0.45)' \
     "the default run's maxCo is $(coOf "$case")"
-check "DEM step of -sample b" "$(demDtOf C4.small.b)" 'v > 9.06e-5 && v < 9.08e-5' \
-    "-sample b gave a DEM step of $(demDtOf C4.small.b) s, not 9.07e-5 s"
+check "DEM step of -sample b" "$(demDtOf C4.small.b)" 'v > 8.99e-5 && v < 9.01e-5' \
+    "-sample b gave a DEM step of $(demDtOf C4.small.b) s, not 0.9 x 1e-4 = 9e-5 s"
+./Allrun -scenario C4 -tag x.b -setupOnly > log.Allrun.tagB 2>&1 \
+    && fail "-tag x.b ran (log.Allrun.tagB)"
+grep -q "^Allrun: -tag x.b: a tag b or ending in .b" log.Allrun.tagB \
+    || fail "-tag x.b did not stop with the option named (log.Allrun.tagB)"
 # -parallel 2 (-demGrid auto): the case's DEM grid is bin/demGrid's best
 # for the dam's grains on 2 ranks, not LIGGGHTS's "* * *"
 ./Allrun -scenario C4 -parallel 2 -tag np2 -endTime 1 -setupOnly > log.Allrun.np2 2>&1 \

@@ -41,6 +41,8 @@ VARIANTS = {
     'Fdem30': 'DEM step 30 % of the 10 mm grains\' Rayleigh time (8.4e-5 s), to 80 s',
     'Fdem36': 'DEM step 1e-4 s, the seed\'s (36 % of the 10 mm grains\' Rayleigh time), to 80 s',
     'Fdem45': 'DEM step 45 % of the 10 mm grains\' Rayleigh time (1.26e-4 s), to 80 s',
+    'turb': 'k-omega SST with the fluid fraction, fluctuations from k (the turbulent matrix, sample a)',
+    'turb.b': 'k-omega SST, fluctuations from k, every step 10 % shorter (sample b)',
 }
 
 

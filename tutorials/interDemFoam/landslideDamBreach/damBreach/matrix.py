@@ -145,7 +145,7 @@ def write_findings(path, scale, res, missing, res_b=None):
     with open(path, 'w') as f:
         f.write('# The seed\'s findings, checked on the %s-scale runs '
                 '(damBreachAnalysis.py matrix)%s%s\n'
-                % (scale, '; two samples (a, and b with every step 10 %% '
+                % (scale, '; two samples (a, and b with every step 10 % '
                    'shorter): a finding holds where it holds in both'
                    if res_b else '',
                    '; missing runs: ' + ' '.join(missing) if missing else ''))

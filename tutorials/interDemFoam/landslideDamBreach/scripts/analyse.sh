@@ -36,6 +36,20 @@ fi
 # (compare.<scale>[.<tag>].png/.txt); with all eight the matrix, the
 # findings, Figs. 8-11 and the Shields numbers in results/ (a variant's in
 # results/<tag>/; with -sample b both samples' matrices and their findings)
+# samplesMatch <first sample's case> <second's>: the second's maxCo and DEM
+# step are 0.9 x the first's (else the two were run with other options)
+samplesMatch()
+{
+local coA coB dtA dtB
+coA=$(foamDictionary -entry maxCo -value "$1"/system/controlDict)
+coB=$(foamDictionary -entry maxCo -value "$2"/system/controlDict)
+dtA=$(sed -n 's/^variable *demDt *index *//p' "$1"/DEM/in.case)
+dtB=$(sed -n 's/^variable *demDt *index *//p' "$2"/DEM/in.case)
+/usr/bin/python3 -c "import sys; a, b, c, d = map(float, sys.argv[1:]); sys.exit(0 if abs(b - 0.9*a) <= 1e-3*a and abs(d - 0.9*c) <= 1e-3*c else 1)" \
+    "$coA" "$coB" "$dtA" "$dtB" 2>/dev/null \
+    || { echo "Allrun: -sample b: $2 has maxCo $coB and DEM step $dtB s, not 0.9 x $1's $coA and $dtA s: run both samples with the same options"; return 1; }
+}
+
 analyseTogether()
 {
 /usr/bin/python3 damBreachAnalysis.py compare compare.$scale${tag:+.$tag} $dirs \
@@ -49,12 +63,15 @@ then
     mkdir -p "$resultsDir"
     if [ "$sample" = b ]
     then
-        local sc firstDirs=""
+        local sc first second firstDirs=""
         for sc in $scenarios
         do
-            firstDirs="$firstDirs $sc.$scale${firstTag:+.$firstTag}"
-            [ -f "$sc.$scale${firstTag:+.$firstTag}/damBreach.summary" ] \
-                || { echo "Allrun: -sample b: the first sample's $sc.$scale${firstTag:+.$firstTag} has not run (./Allrun -scenario all${firstTag:+ -tag $firstTag} first)"; exit 1; }
+            first=$sc.$scale${firstTag:+.$firstTag} second=$sc.$scale.$tag
+            firstDirs="$firstDirs $first"
+            [ -f "$first/damBreach.summary" ] \
+                || { echo "Allrun: -sample b: the first sample's $first has not run (./Allrun -scenario all${firstTag:+ -tag $firstTag} first)"; exit 1; }
+            # the two samples of a scenario: the same run, every step 0.9 x
+            samplesMatch "$first" "$second" || exit 1
         done
         /usr/bin/python3 damBreachAnalysis.py matrix "$resultsDir" $scale \
             $firstDirs --second $dirs \

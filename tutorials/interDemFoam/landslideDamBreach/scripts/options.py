@@ -28,7 +28,6 @@ SCALES = {
                  defaultLake='', defaultEnd='200', maxEnd='600'),
 }
 PIECE_LENGTH = '20'     # s, the pieces after the first
-DEFAULT_DEM_STEP = 0.18  # of the smallest grains' Rayleigh time (setup.sh)
 # all eight: the long F runs early, so that two cores stay busy to the end
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
@@ -191,17 +190,21 @@ def check_ranks(o):
 
 def check_sample(o, s):
     """-sample: a (the run as set) or b, the second sample of the matrix:
-    every step 10 % shorter (maxCo and the DEM step x 0.9), in the cases
+    every step 10 % shorter (maxCo x 0.9, and the DEM step the run would
+    have x 0.9: demStepScale, setup.sh), in the cases
     <scenario>.<scale>[.<tag>].b; firstTag names the first sample's."""
-    s['maxCo'], s['demStep'], s['tag'] = o['maxCo'], o['demStep'], o['tag']
-    s['firstTag'] = o['tag']
+    s['maxCo'], s['tag'] = o['maxCo'], o['tag']
+    s['firstTag'], s['demStepScale'] = o['tag'], '1'
     if o['sample'] not in ('a', 'b'):
         raise OptionError("-sample: use a (the run as set) or b (the "
                           "matrix's second sample, every step 10 %% "
                           "shorter), got '%s'" % o['sample'])
+    if o['tag'] == 'b' or o['tag'].endswith('.b'):
+        raise OptionError("-tag %s: a tag b or ending in .b names a second "
+                          "sample's cases: use -sample b" % o['tag'])
     if o['sample'] == 'b':
         s['maxCo'] = '%g' % (0.9*float(o['maxCo']))
-        s['demStep'] = '%g' % (0.9*float(o['demStep'] or DEFAULT_DEM_STEP))
+        s['demStepScale'] = '0.9'
         s['tag'] = o['tag'] + '.b' if o['tag'] else 'b'
 
 
@@ -220,6 +223,9 @@ def check(o):
                           "3's particle-geometry values) or pocket (rolling "
                           "friction 0.577), got '%s'" % o['bed'])
     check_run_length(o, s)
+    if not number(o['maxCo'], lambda c: 0 < c <= 5):
+        raise OptionError("-maxCo needs a Courant number > 0 and at most 5 "
+                          "(default 0.5), got '%s'" % o['maxCo'])
     if o['demStep'] and not number(o['demStep'], lambda f: 0 < f <= 0.5):
         raise OptionError("-demStep needs the DEM step as a fraction of the "
                           "smallest grains' Rayleigh time, > 0 and at most "
@@ -262,7 +268,8 @@ def main(argv):
         return 1
     for k in ('scenario', 'width', 'nCells', 'sides', 'yBoundary', 'sideWalls',
               'lakeLevel', 'endTime', 'untilEnded', 'maxEnd', 'pieceLength',
-              'intensity', 'eddyTime', 'maxCo', 'demStep', 'tag', 'firstTag'):
+              'intensity', 'eddyTime', 'maxCo', 'demStepScale', 'tag',
+              'firstTag'):
         print('%s=%s' % (k, shlex.quote(s[k])))
     return 0
 

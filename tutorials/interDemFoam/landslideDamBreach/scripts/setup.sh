@@ -26,7 +26,8 @@ EOF
 # step it needs (at most 20 % of the Rayleigh time of the smallest grains,
 # Table 3's shear modulus: 20 mm 5.6e-4 s, 15 mm 4.2e-4 s, 10 mm 2.8e-4 s,
 # 5 mm 1.4e-4 s); $2 = run: the case's step, -demStep's fraction of that
-# Rayleigh time when given (the dam is always poured at the default)
+# Rayleigh time when given, times demStepScale (-sample b: 0.9); the dam is
+# always poured at the default
 setMaterial()
 {
     material=$1
@@ -40,6 +41,11 @@ setMaterial()
     if [ "$2" = run ] && [ -n "$demStep" ]
     then
         demDt=$(/usr/bin/python3 -c "print('%.3g' % ($demStep*$rayleigh))")
+    fi
+    # the matrix's second sample (-sample b): 0.9 x the step
+    if [ "$2" = run ] && [ "${demStepScale:-1}" != 1 ]
+    then
+        demDt=$(/usr/bin/python3 -c "print('%.3g' % ($demStepScale*$demDt))")
     fi
     damName=$material.$scale
     [ "$scale" = small ] && [ "$width" != 0.1 ] && damName=$damName.w$width
@@ -55,7 +61,7 @@ if [ -f "$damFile" ] && [ -f "${damFile%.restart}.grading" ] && [ "$2" != force 
 then
     return 0
 fi
-rm -f "$damFile" "${damFile%.restart}.grading"
+rm -f "$damFile" "${damFile%.restart}.grading" "${damFile%.restart}.grains"
 echo "Building the dam: material $material, $scale scale, DEM step $demDt s (LIGGGHTS)"
 rm -rf build.$damName
 mkdir -p build.$damName/DEM results
@@ -111,7 +117,7 @@ then
     return 0
 fi
 skin=$(sed -n 's/^neighbor *\([0-9.eE+-]*\) .*/\1/p' DEM/in.common)
-demGrid=$(demGrid "$grains" "$nProcs" --skin "$skin" --best) \
+demGrid=$("$INTERDEMFOAM_DIR"/bin/demGrid "$grains" "$nProcs" --skin "$skin" --best) \
     || { echo "Allrun: bin/demGrid failed on $grains"; return 1; }
 echo "Allrun: the DEM's processor grid on $nProcs ranks, from the dam's grains: $demGrid (bin/demGrid)"
 }
