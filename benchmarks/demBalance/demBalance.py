@@ -92,11 +92,17 @@ def table(results, logs):
                      % log)
         text = open(log).read()
         stats = [histogram(text, k) for k in ('Nlocal', 'Nghost', 'Neighs')]
+        loop = re.findall(r'^Loop time of (\S+) on \d+ procs for (\d+) steps '
+                          r'with (\d+) atoms', text, re.M)
         if None in stats:
             sys.exit('demBalance table: %s has no end-of-run histograms '
                      '(the run failed?)' % log)
+        # core time per grain-step (us): P x wall / (steps x grains)
+        core = (int(m.group(2))*float(loop[-1][0])
+                / (int(loop[-1][1])*int(loop[-1][2]))*1e6
+                if loop and int(loop[-1][1]) > 0 else float('nan'))
         rows.append((m.group(1), int(m.group(2)),
-                     '%s %s %s' % m.group(3, 4, 5), stats))
+                     '%s %s %s' % m.group(3, 4, 5), stats, core))
     rows.sort(key=lambda row: (row[0], row[1], row[3][2][1]))
     serial = {r[0]: r for r in rows if r[1] == 1}
     with open(results, 'w') as f:
@@ -105,19 +111,23 @@ def table(results, logs):
                 '# pairRatio = P x max neighbour pairs / pairs on one rank '
                 '(the projected core time per grain-step over one rank\'s); '
                 'atomRatio = P x max (owned + ghost) / grains on one rank; '
-                'imbalance = max/ave pairs\n'
+                'imbalance = max/ave pairs; coreUs = P x loop time / (steps '
+                'x grains), us of core time per grain-step (a timing: '
+                'meaningful only with a core per rank and nothing else '
+                'running)\n'
                 '# label P gx gy gz ownedAve ownedMax ghostAve ghostMax '
-                'pairsAve pairsMax imbalance pairRatio atomRatio\n')
-        for label, p, grid, (own, ghost, pairs) in rows:
+                'pairsAve pairsMax imbalance pairRatio atomRatio coreUs\n')
+        for label, p, grid, (own, ghost, pairs), core in rows:
             if label not in serial:
                 sys.exit('demBalance table: no one-rank run of %s' % label)
             one = serial[label][3]
             pair_ratio = p*pairs[1]/one[2][1]
             atom_ratio = p*max(own[1] + ghost[1], 1)/one[0][1]
-            f.write('%-8s %2d %s %.0f %.0f %.0f %.0f %.0f %.0f %.2f %.2f %.2f\n'
+            f.write('%-8s %2d %s %.0f %.0f %.0f %.0f %.0f %.0f %.2f %.2f %.2f '
+                    '%.3f\n'
                     % (label, p, grid, own[0], own[1], ghost[0], ghost[1],
                        pairs[0], pairs[1], pairs[1]/pairs[0], pair_ratio,
-                       atom_ratio))
+                       atom_ratio, core))
     print(open(results).read())
 
 
