@@ -30,7 +30,8 @@
 #     step 0.9 x 1e-4 = 9e-5 s in the case C4.small.b, and -tag x.b is
 #     refused;
 #     the two-sample findings hold only where both samples hold (verdict()
-#     on the six pairs of words), and the matrix with --second writes both
+#     on the six pairs of words; two made-up samples of four findings count
+#     1 held in both, negative control a count of sample a only), and the matrix with --second writes both
 #     samples' matrix and phases and holds nothing with seven runs missing;
 #   - -parallel 2 writes the DEM grid bin/demGrid chooses from the dam's
 #     grains (-demGrid auto), the serial run LIGGGHTS's "* * *".
@@ -212,7 +213,8 @@ EOF
 
 # verdictCheck <dir>: two samples (matrix --second): a finding "holds" only
 # where it holds in both; in one only it says which; the one-sample words
-# stay as they were
+# stay as they were; the count of two made-up samples' findings is of
+# those that hold in both
 verdictCheck()
 {
     local wrong
@@ -228,6 +230,20 @@ for (a, b), expected in cases:
     got = m.verdict(a, b, 'holds')
     if got != expected:
         print('%s %s -> %s' % (a, b, got))
+# the count of two made-up samples: P1 holds in both, P2 in a only, P3 in
+# neither, P4 in b only
+import os, tempfile
+res_a = [('P1', 'c', [], True), ('P2', 'c', [], True), ('P3', 'c', [], False),
+         ('P4', 'c', [], False)]
+res_b = [('P1', 'c', [], True), ('P2', 'c', [], False), ('P3', 'c', [], False),
+         ('P4', 'c', [], True)]
+path = os.path.join(tempfile.mkdtemp(), 'findings.txt')
+m.write_findings(path, 'small', res_a, [], res_b)
+text = open(path).read()
+for line in ('# 1 of 4 hold in both samples', '# in sample a 2 of 4 hold, in sample b 2',
+             'P2 holds in one sample only (a): c', 'P4 holds in one sample only (b): c'):
+    if line not in text.split('\n'):
+        print('no line %r in the findings of two made-up samples' % line)
 EOF
 ) || fail "the verdict check could not run: $wrong"
     [ -z "$wrong" ] || fail "two samples judged wrongly: $(echo $wrong)"
@@ -254,6 +270,10 @@ twoSampleChecks()
     esac
 }
 
+breakAnalysis countOneSample matrix 's/held = sum(ok and (res_b is None or res_b\[i\]\[3\])/held = sum(ok and True/' \
+    '        held = sum(ok and True'
+mustFail verdictCheck "$PWD/countOneSample" "the count of sample a only" \
+    "hold in both samples"
 breakAnalysis bothSamples matrix 's/^    if ok_b is None or ok_a == ok_b:$/    if True:/' '    if True:'
 mustFail verdictCheck "$PWD/bothSamples" "one sample enough to hold" \
     "two samples judged wrongly"
