@@ -237,9 +237,10 @@ res_a = [('P1', 'c', [], True), ('P2', 'c', [], True), ('P3', 'c', [], False),
          ('P4', 'c', [], False)]
 res_b = [('P1', 'c', [], True), ('P2', 'c', [], False), ('P3', 'c', [], False),
          ('P4', 'c', [], True)]
-path = os.path.join(tempfile.mkdtemp(), 'findings.txt')
-m.write_findings(path, 'small', res_a, [], res_b)
-text = open(path).read()
+with tempfile.TemporaryDirectory() as scratch:
+    path = os.path.join(scratch, 'findings.txt')
+    m.write_findings(path, 'small', res_a, [], res_b)
+    text = open(path).read()
 for line in ('# 1 of 4 hold in both samples', '# in sample a 2 of 4 hold, in sample b 2',
              'P2 holds in one sample only (a): c', 'P4 holds in one sample only (b): c'):
     if line not in text.split('\n'):
