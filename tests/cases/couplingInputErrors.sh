@@ -18,11 +18,12 @@
 #     explicit; demDrag implicit with that fix stops naming both
 #   - an error LIGGGHTS reports in a 2-rank run (Error::one, which calls
 #     MPI_Abort) ends with its message, the command and its script line
-#   - and the rest of docs/reliability.md's table of bad inputs (35 checks:
+#   - and the rest of docs/reliability.md's table of bad inputs (37 checks:
 #     'did you mean' for misspelt keywords, wrong types, ranges, missing
 #     sub-dictionaries, file coupling, a DEM box smaller than the mesh,
 #     restarts without demRestartScript or DEM state, a non-finite particle
-#     also on 2 ranks, bad fluidVelocity and velocityFluctuation values)
+#     also on 2 ranks, bad fluidVelocity and velocityFluctuation values,
+#     eddyLifetime outside source turbulence or not a known word)
 #     and its warnings (Rayleigh time, particles outside the mesh);
 #   - the output guard: 3000 identical LIGGGHTS lines run to the end, 12000
 #     are stopped.
@@ -153,6 +154,12 @@ expectError misspeltEddyTime "Unknown keyword 'eddytime'" "intensity, eddyTime a
 
 echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; seed -1; }" >> constant/couplingProperties
 expectError negativeSeed "seed -1" ">= 0" "velocityFluctuation"
+
+echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; eddyLifetime turnover; }" >> constant/couplingProperties
+expectError lifetimeWithFixed "Unknown keyword 'eddyLifetime'" "intensity, eddyTime and seed" "velocityFluctuation"
+
+echo "velocityFluctuation { source turbulence; eddyLifetime longest; }" >> constant/couplingProperties
+expectError unknownEddyLifetime "eddyLifetime 'longest'" "crossing" "turnover" "velocityFluctuation"
 
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts

@@ -101,7 +101,19 @@ Foam::demCoupling::fluidSampler::fluidSampler
                 << velocityFluctuation::streamwisePerSqrtK << " sqrt(k),"
                 << " lateral " << velocityFluctuation::lateralRatio
                 << " and vertical " << velocityFluctuation::verticalRatio
-                << " of it; velocityFluctuation source turbulence)" << endl;
+                << " of it; velocityFluctuation source turbulence); eddy"
+                << " lifetime "
+                << velocityFluctuation::eddyLifetimeModelNames
+                   [
+                       fluctuation_->eddyLifetime()
+                   ]
+                << (
+                       fluctuation_->eddyLifetime()
+                    == velocityFluctuation::eddyLifetimeModel::turnover
+                     ? " (k/epsilon)"
+                     : " (l_e/max(sqrt(2k/3), |u - v|))"
+                   )
+                << endl;
         }
         else
         {

@@ -43,6 +43,16 @@ Foam::demCoupling::velocityFluctuation::fluctuationSourceNames
     { fluctuationSource::turbulence, "turbulence" },
 });
 
+const Foam::Enum
+<
+    Foam::demCoupling::velocityFluctuation::eddyLifetimeModel
+>
+Foam::demCoupling::velocityFluctuation::eddyLifetimeModelNames
+({
+    { eddyLifetimeModel::crossing, "crossing" },
+    { eddyLifetimeModel::turnover, "turnover" },
+});
+
 const Foam::scalar
 Foam::demCoupling::velocityFluctuation::streamwisePerSqrtK =
     2.30*std::sqrt(2.0/(2.30*2.30 + 1.63*1.63 + 1.27*1.27));
@@ -62,6 +72,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
 )
 :
     source_(fluctuationSource::fixed),
+    eddyLifetime_(eddyLifetimeModel::crossing),
     intensity_(0),
     eddyTime_(1),
     seed_(0)
@@ -77,7 +88,14 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     {
         const dictionary& coeffs = inputCheck::subDict
         (
-            dict, "velocityFluctuation", {"source", "seed"}
+            dict, "velocityFluctuation", {"source", "eddyLifetime", "seed"}
+        );
+        eddyLifetime_ = inputCheck::selectOrDefault
+        (
+            coeffs, "eddyLifetime", eddyLifetimeModelNames,
+            eddyLifetimeModel::crossing,
+            "crossing (l_e/max(sqrt(2k/3), |u - v|), Gosman & Ioannides; the"
+            " default) and turnover (k/epsilon)"
         );
         seed_ = inputCheck::getOrDefault<label>
         (
@@ -112,8 +130,23 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
 )
 :
     source_(fluctuationSource::fixed),
+    eddyLifetime_(eddyLifetimeModel::crossing),
     intensity_(intensity),
     eddyTime_(eddyTime),
+    seed_(seed)
+{}
+
+
+Foam::demCoupling::velocityFluctuation::velocityFluctuation
+(
+    const eddyLifetimeModel eddyLifetime,
+    const label seed
+)
+:
+    source_(fluctuationSource::turbulence),
+    eddyLifetime_(eddyLifetime),
+    intensity_(0),
+    eddyTime_(1),
     seed_(seed)
 {}
 
@@ -208,12 +241,17 @@ Foam::scalar Foam::demCoupling::velocityFluctuation::lifetime
     const scalar k,
     const scalar epsilon,
     const scalar slip
-)
+) const
 {
-    // Gosman & Ioannides (1983): the eddy's length and the longer of the
-    // particle's ways out of it, the eddy's own decay or crossing it
+    if (eddyLifetime_ == eddyLifetimeModel::turnover)
+    {
+        // The energy-carrying eddies' turnover time
+        return k/epsilon;
+    }
     const scalar Cmu = 0.09;
     const scalar le = std::pow(Cmu, 0.75)*std::pow(k, 1.5)/epsilon;
+    // Gosman & Ioannides (1983): the eddy's length and the quicker of the
+    // particle's ways out of it, the eddy's own decay or crossing it
     return le/max(std::sqrt(2.0*k/3.0), slip);
 }
 

@@ -6,7 +6,10 @@
 // zero mean, streamwise r.m.s. I |U|, lateral and vertical r.m.s. 1.63/2.30
 // and 1.27/2.30 of it (Nezu & Nakagawa 1993) along the directions set by U
 // and gravity, one value per eddy, unrelated values in successive eddies,
-// and the same value for the same particle and time.
+// and the same value for the same particle and time. With the turbulence
+// model as source: the eddy lifetimes of Gosman & Ioannides (crossing) and
+// of the energy-carrying eddies' turnover time k/epsilon (turnover),
+// against their closed forms.
 //
 // Sampling error: over n = 40000 independent draws the mean of a unit
 // normal has a standard error of 1/sqrt(n) = 0.005 and its r.m.s. one of
@@ -196,4 +199,91 @@ TEST(velocityFluctuation, SeedsGiveOtherDraws)
         }
     }
     EXPECT_EQ(same, 0);
+}
+
+
+// The eddy lifetimes against their closed forms, l_e = C_mu^(3/4) k^(3/2)/eps
+// with C_mu = 0.09: k = 0.037 m2/s2, eps = 0.15 m2/s3 (the bedload channel's
+// bed cell at theta = 0.3, docs/erosion.md), so k/eps = 0.2467 s,
+// l_e = 0.1643 k^1.5/eps = 7.80 mm and sqrt(2k/3) = 0.157 m/s.
+TEST(velocityFluctuation, EddyLifetimesHaveTheirClosedForms)
+{
+    const scalar k = 0.037, eps = 0.15;
+    const scalar le = Foam::pow(0.09, 0.75)*Foam::pow(k, 1.5)/eps;
+    const scalar uTurb = Foam::sqrt(2*k/3);
+    const velocityFluctuation crossing
+    (
+        velocityFluctuation::eddyLifetimeModel::crossing, 1
+    );
+    const velocityFluctuation turnover
+    (
+        velocityFluctuation::eddyLifetimeModel::turnover, 1
+    );
+
+    // A grain at rest: crossing keeps the eddy's own decay, l_e/sqrt(2k/3)
+    // = C_mu^(3/4)/sqrt(2/3) k/eps = 0.2012 k/eps; turnover keeps k/eps
+    EXPECT_NEAR(crossing.lifetime(k, eps, 0)/(k/eps), 0.2012, 1e-3);
+    EXPECT_NEAR(turnover.lifetime(k, eps, 0), k/eps, 1e-12);
+
+    // A slow grain (slip 0.01 m/s, crossing time 0.78 s > k/eps): the same
+    EXPECT_NEAR(crossing.lifetime(k, eps, 0.01), le/uTurb, 1e-12);
+    EXPECT_NEAR(turnover.lifetime(k, eps, 0.01), k/eps, 1e-12);
+
+    // A grain at rest under flow at 0.5 m/s (slip faster than sqrt(2k/3)):
+    // crossing leaves the eddy as the flow carries it past, in
+    // l_e/slip = 15.6 ms; turnover keeps k/eps
+    EXPECT_NEAR(crossing.lifetime(k, eps, 0.5), le/0.5, 1e-12);
+    EXPECT_NEAR(turnover.lifetime(k, eps, 0.5), k/eps, 1e-12);
+}
+
+
+// The lifetime is what the draws keep: a grain at rest under flow at
+// 0.5 m/s keeps its fluctuation for k/eps with turnover, for the crossing
+// time l_e/0.5 = 0.063 k/eps with crossing. Over n particles the fraction
+// that still sees the same eddy after 0.5 k/eps is 0.5 (turnover: each
+// particle's eddies are shifted by a uniform fraction of the lifetime) and
+// 0 (crossing). Binomial standard error sqrt(0.25/n) = 0.0025.
+TEST(velocityFluctuation, TurnoverEddiesLiveLongerForRestingGrains)
+{
+    const scalar k = 0.037, eps = 0.15;
+    const vector U(0.5, 0, 0), up(0, 0, 1);
+    const scalar slip = mag(U);
+    const velocityFluctuation crossing
+    (
+        velocityFluctuation::eddyLifetimeModel::crossing, 4
+    );
+    const velocityFluctuation turnover
+    (
+        velocityFluctuation::eddyLifetimeModel::turnover, 4
+    );
+    const scalar t0 = 20.0, dt = 0.5*k/eps;
+    label keptTurnover = 0, keptCrossing = 0;
+    scalar sq = 0;
+    for (label tag = 1; tag <= n; ++tag)
+    {
+        const vector a(turnover.turbulent(tag, t0, U, up, k, eps, slip));
+        if (a == turnover.turbulent(tag, t0 + dt, U, up, k, eps, slip))
+        {
+            ++keptTurnover;
+        }
+        if
+        (
+            crossing.turbulent(tag, t0, U, up, k, eps, slip)
+         == crossing.turbulent(tag, t0 + dt, U, up, k, eps, slip)
+        )
+        {
+            ++keptCrossing;
+        }
+        sq += sqr(a.x());
+    }
+    EXPECT_NEAR(scalar(keptTurnover)/n, 0.5, 0.01);
+    EXPECT_EQ(keptCrossing, 0);
+    // and the lifetime leaves the size alone: streamwise r.m.s. 1.05 sqrt(k)
+    EXPECT_NEAR
+    (
+        Foam::sqrt(sq/n)/(velocityFluctuation::streamwisePerSqrtK
+       *Foam::sqrt(k)),
+        1,
+        0.015
+    );
 }
