@@ -107,13 +107,12 @@ Foam::demCoupling::fluidSampler::fluidSampler
                    [
                        fluctuation_->eddyLifetime()
                    ]
-                << (
+                << " ("
+                << velocityFluctuation::lifetimeFormula
+                   (
                        fluctuation_->eddyLifetime()
-                    == velocityFluctuation::eddyLifetimeModel::turnover
-                     ? " (k/epsilon)"
-                     : " (l_e/max(sqrt(2k/3), |u - v|))"
                    )
-                << endl;
+                << ")" << endl;
         }
         else
         {

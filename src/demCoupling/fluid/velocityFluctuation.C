@@ -94,8 +94,10 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
         (
             coeffs, "eddyLifetime", eddyLifetimeModelNames,
             eddyLifetimeModel::crossing,
-            "crossing (l_e/max(sqrt(2k/3), |u - v|), Gosman & Ioannides; the"
-            " default) and turnover (k/epsilon)"
+            std::string("crossing (")
+          + lifetimeFormula(eddyLifetimeModel::crossing)
+          + ", Gosman & Ioannides; the default) and turnover ("
+          + lifetimeFormula(eddyLifetimeModel::turnover) + ")"
         );
         seed_ = inputCheck::getOrDefault<label>
         (
@@ -233,6 +235,17 @@ Foam::vector Foam::demCoupling::velocityFluctuation::operator()
         return Zero;
     }
     return draw(tag, eddy(tag, t), U/magU, up, intensity_*magU);
+}
+
+
+const char* Foam::demCoupling::velocityFluctuation::lifetimeFormula
+(
+    const eddyLifetimeModel model
+)
+{
+    return model == eddyLifetimeModel::turnover
+        ? "k/epsilon"
+        : "l_e/max(sqrt(2k/3), |u - v|)";
 }
 
 
