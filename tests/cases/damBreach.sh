@@ -34,7 +34,12 @@
 #     1 held in both, negative control a count of sample a only), and the matrix with --second writes both
 #     samples' matrix and phases and holds nothing with seven runs missing;
 #   - -parallel 2 writes the DEM grid bin/demGrid chooses from the dam's
-#     grains (-demGrid auto), the serial run LIGGGHTS's "* * *".
+#     grains (-demGrid auto), the serial run LIGGGHTS's "* * *";
+#   - -eddyLifetime turnover (with -turbulence kOmegaSST -fluctuation
+#     turbulence) writes velocityFluctuation { source turbulence;
+#     eddyLifetime turnover; } into the case (the default run has no
+#     eddyLifetime), and without -fluctuation turbulence stops with the
+#     option named.
 # Each value is read from damBreach.summary and must be a number (a missing
 # line fails); negative controls: the checks fail on the summary without any
 # one of these lines, and on an empty one; the matrix check fails on a copy
@@ -347,6 +352,24 @@ echo "-parallel 2: DEM grid $expected"
     && fail "-demStep 0.7 ran (log.Allrun.step70)"
 grep -q "^Allrun: -demStep needs" log.Allrun.step70 \
     || fail "-demStep 0.7 did not stop with the option named (log.Allrun.step70)"
+# -eddyLifetime turnover (with -turbulence kOmegaSST -fluctuation
+# turbulence) writes velocityFluctuation { source turbulence; eddyLifetime
+# turnover; } into the case's constant/couplingProperties (the default run
+# has no eddyLifetime there: the negative control of the read); without
+# -fluctuation turbulence it stops with the option named
+./Allrun -scenario C4 -turbulence kOmegaSST -fluctuation turbulence -eddyLifetime turnover \
+    -tag turnover -endTime 1 -setupOnly > log.Allrun.turnover 2>&1 \
+    || { tail -5 log.Allrun.turnover; fail "Allrun -eddyLifetime turnover -setupOnly failed"; }
+fluctuationOf() { foamDictionary -entry "velocityFluctuation/$2" -value "$1/constant/couplingProperties" 2>/dev/null; }
+[ "$(fluctuationOf C4.small.turnover source)" = turbulence ] \
+    && [ "$(fluctuationOf C4.small.turnover eddyLifetime)" = turnover ] \
+    || fail "-eddyLifetime turnover wrote velocityFluctuation { source '$(fluctuationOf C4.small.turnover source)'; eddyLifetime '$(fluctuationOf C4.small.turnover eddyLifetime)'; }, not turbulence and turnover"
+[ -z "$(fluctuationOf "$case" eddyLifetime)" ] \
+    || fail "the default run's couplingProperties has an eddyLifetime (negative control of the read)"
+./Allrun -scenario C4 -eddyLifetime turnover -tag turnoverLam -setupOnly > log.Allrun.turnoverLam 2>&1 \
+    && fail "-eddyLifetime turnover without -fluctuation turbulence ran (log.Allrun.turnoverLam)"
+grep -q "^Allrun: -eddyLifetime is how long a grain keeps an eddy" log.Allrun.turnoverLam \
+    || fail "-eddyLifetime without -fluctuation turbulence did not stop with the option named (log.Allrun.turnoverLam)"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"

@@ -32,7 +32,7 @@ PIECE_LENGTH = '20'     # s, the pieces after the first
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
 VARIANTS = ('-width, -cellSize, -voidFraction, -forces, -fluidVelocity, '
-            '-fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
+            '-fluctuation, -eddyLifetime, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
             '-semiImplicitAlpha, -maxTime, -demStep')
 
 
@@ -77,7 +77,7 @@ def check_run_length(o, s):
 
 def is_variant(o):
     return any(o[k] for k in ('width', 'voidFraction', 'forces',
-                              'fluidVelocity', 'fluctuation',
+                              'fluidVelocity', 'fluctuation', 'eddyLifetime',
                               'minVoidFraction', 'grading', 'maxTime',
                               'demStep')) \
         or o['cellSize'] != '0.05' or o['bed'] != 'rough' \
@@ -106,7 +106,8 @@ def check_cells(o, s):
 
 
 def check_coupling(o, s):
-    """-fluidVelocity, -minVoidFraction, -fluctuation, -voidFraction."""
+    """-fluidVelocity, -minVoidFraction, -fluctuation, -eddyLifetime,
+    -voidFraction."""
     if o['fluidVelocity'] not in ('', 'voidFractionAverage', 'cellPoint'):
         raise OptionError("-fluidVelocity: use voidFractionAverage (the "
                           "default) or cellPoint, got '%s'"
@@ -135,6 +136,16 @@ def check_coupling(o, s):
                               "(>= 0) and the eddy time (s, > 0), or "
                               "turbulence, got '%s'"
                               % o['fluctuation'])
+    if o['eddyLifetime']:
+        if o['eddyLifetime'] not in ('crossing', 'turnover'):
+            raise OptionError("-eddyLifetime: use crossing (the default: the "
+                              "time the flow takes to carry an eddy past the "
+                              "grain) or turnover (k/epsilon), got '%s'"
+                              % o['eddyLifetime'])
+        if o['fluctuation'] != 'turbulence':
+            raise OptionError("-eddyLifetime is how long a grain keeps an "
+                              "eddy of the turbulence model: give "
+                              "-fluctuation turbulence -turbulence kOmegaSST")
     if o['voidFraction'] not in ('', 'virtualSphere', 'divided', 'centre'):
         raise OptionError("-voidFraction: unknown model '%s': use "
                           "virtualSphere, divided or centre" % o['voidFraction'])

@@ -24,6 +24,7 @@ voidFraction=""
 forces=""
 fluidVelocity=""
 fluctuation=""
+eddyLifetime=""
 turbulence=laminar
 minVoidFraction=""
 grading=""
@@ -53,6 +54,7 @@ parseOptions()
             -forces)   forces="$2"; shift ;;
             -fluidVelocity) fluidVelocity="$2"; shift ;;
             -fluctuation) fluctuation="$2"; shift ;;
+            -eddyLifetime) eddyLifetime="$2"; shift ;;
             -turbulence) turbulence="$2"; shift ;;
             -minVoidFraction) minVoidFraction="$2"; shift ;;
             -grading)  grading="$2"; shift ;;
@@ -68,7 +70,7 @@ parseOptions()
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
         esac
         shift
     done
@@ -90,7 +92,8 @@ checkOptions()
         semiImplicitAlpha="$semiImplicitAlpha" jobs="$jobs" tag="$tag" \
         width="$widthOption" cellSize="$cellSize" voidFraction="$voidFraction" \
         forces="$forces" fluidVelocity="$fluidVelocity" \
-        fluctuation="$fluctuation" turbulence="$turbulence" \
+        fluctuation="$fluctuation" eddyLifetime="$eddyLifetime" \
+        turbulence="$turbulence" \
         minVoidFraction="$minVoidFraction" \
         grading="$grading" bed="$bed" maxTime="$maxTimeOption" \
         demGrid="$demGrid" demStep="$demStep" resume="$resume" \

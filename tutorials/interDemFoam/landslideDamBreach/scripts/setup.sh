@@ -204,7 +204,9 @@ then
 fi
 if [ "$fluctuation" = turbulence ]
 then
-    foamDictionary -entry velocityFluctuation -add "{ source turbulence; }" \
+    local lifetime=""
+    [ -n "$eddyLifetime" ] && lifetime=" eddyLifetime $eddyLifetime;"
+    foamDictionary -entry velocityFluctuation -add "{ source turbulence;$lifetime }" \
         "$dir"/constant/couplingProperties > /dev/null || return 1
 elif [ -n "$fluctuation" ]
 then
