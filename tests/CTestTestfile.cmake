@@ -92,6 +92,11 @@ set_tests_properties(case.fluidizedBedAlpha PROPERTIES LABELS "case;coupled" TIM
 # OpenFOAM's own damBreak runs unchanged with interDemFoam as with interFoam
 add_test(case.fluidizedBedSubCycled "bash" "cases/packedBed.sh" "fluidizeSubCycled")
 set_tests_properties(case.fluidizedBedSubCycled PROPERTIES LABELS "case;coupled;alpha" TIMEOUT 600)
+# the continuity correction by PCG with the envelopeCholesky preconditioner
+# (the Laplacian's exact factor): the same alpha and water checks, one
+# iteration per solve, one factorisation per run
+add_test(case.fluidizedBedEnvelopeCholesky "bash" "cases/packedBed.sh" "fluidizeEnvelopeCholesky")
+set_tests_properties(case.fluidizedBedEnvelopeCholesky PROPERTIES LABELS "case;coupled;alpha" TIMEOUT 600)
 add_test(case.settlingSubCycled "bash" "cases/singleParticleSettling.sh" "subCycled")
 set_tests_properties(case.settlingSubCycled PROPERTIES LABELS "case;coupled;alpha" TIMEOUT 600)
 add_test(case.closedBoxSubCycled "bash" "cases/closedBoxConservation.sh" "subCycled")
