@@ -14,7 +14,7 @@ import re
 import sys
 
 RUNS = ['interFoam', 'interFoamHeap', 'noParticles', 'frozen',
-        'frozenSemiImplicit', 'frozenGAMG']
+        'frozenSemiImplicit', 'frozenGAMG', 'frozenEnvelopeCholesky']
 STAGES = ['phaseFraction', 'continuityCorrection', 'momentum', 'pressure',
           'other']
 
