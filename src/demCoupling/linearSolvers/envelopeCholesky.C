@@ -52,11 +52,14 @@ void Foam::demCoupling::envelopeCholesky::collectEntries
         const labelUList& cells1 =
             interfaces[nbrPatchi].interface().faceCells();
         const scalarField& coeffs = sol.interfaceBouCoeffs()[patchi];
+        const scalarField& nbrCoeffs = sol.interfaceBouCoeffs()[nbrPatchi];
         forAll(cells0, facei)
         {
             if (cells0[facei] == cells1[facei])
             {
-                diag[cells0[facei]] -= coeffs[facei];
+                // a cell coupled to itself (one cell across the cyclic):
+                // both sides' faces act on its own value
+                diag[cells0[facei]] -= coeffs[facei] + nbrCoeffs[facei];
             }
             else
             {
@@ -88,7 +91,10 @@ void Foam::demCoupling::envelopeCholesky::collectEntries
 }
 
 
-void Foam::demCoupling::envelopeCholesky::layOut()
+void Foam::demCoupling::envelopeCholesky::layOut
+(
+    const scalar maxEntriesPerCell
+)
 {
     const label nCells = diag_.size();
 
@@ -129,6 +135,27 @@ void Foam::demCoupling::envelopeCholesky::layOut()
         const label b = cellToOrdered_[entryCell1_[entryi]];
         const label row = max(a, b);
         firstColumn_[row] = min(firstColumn_[row], min(a, b));
+    }
+
+    // The envelope's size before any of it is allocated (in doubles: it
+    // may exceed a label)
+    scalar nEntries = 0;
+    for (label rowi = 0; rowi < nCells; ++rowi)
+    {
+        nEntries += rowi - firstColumn_[rowi];
+    }
+    if (nEntries > maxEntriesPerCell*max(nCells, label(1)))
+    {
+        FatalErrorInFunction
+            << "system/fvSolution: solvers." << fieldName_ << ": the "
+            << "envelopeCholesky preconditioner would keep " << nEntries
+            << " entries for " << nCells << " cells ("
+            << nEntries/max(nCells, label(1)) << " per cell), more than "
+            << "maxEnvelopePerCell " << maxEntriesPerCell << ". Use "
+            << "preconditioner DIC, or GAMG, for " << fieldName_ << ", or "
+            << "raise the limit: preconditioner { preconditioner "
+            << "envelopeCholesky; maxEnvelopePerCell <entries per cell>; }"
+            << exit(FatalError);
     }
 
     rowStart_.setSize(nCells + 1);
@@ -193,12 +220,12 @@ void Foam::demCoupling::envelopeCholesky::factorise()
         if (!(pivot > 0))
         {
             FatalErrorInFunction
-                << "The matrix of " << fieldName_ << " is not definite "
-                << "(pivot " << pivot << " in cell " << orderedToCell_[rowi]
-                << "): the envelopeCholesky preconditioner needs a "
-                << "symmetric positive or negative definite matrix; use "
-                << "DIC or GAMG for " << fieldName_ << " in fvSolution"
-                << exit(FatalError);
+                << "system/fvSolution: solvers." << fieldName_ << ": the "
+                << "matrix of " << fieldName_ << " is not definite (pivot "
+                << pivot << " in cell " << orderedToCell_[rowi] << "); the "
+                << "envelopeCholesky preconditioner needs a symmetric "
+                << "positive or negative definite matrix: use DIC or GAMG "
+                << "for " << fieldName_ << exit(FatalError);
         }
         diagonal_[rowi] = sqrt(pivot);
     }
@@ -209,7 +236,8 @@ void Foam::demCoupling::envelopeCholesky::factorise()
 
 Foam::demCoupling::envelopeCholesky::envelopeCholesky
 (
-    const lduMatrix::solver& sol
+    const lduMatrix::solver& sol,
+    const scalar maxEntriesPerCell
 )
 :
     fieldName_(sol.fieldName()),
@@ -219,9 +247,11 @@ Foam::demCoupling::envelopeCholesky::envelopeCholesky
     if (!matrix.symmetric() && !matrix.diagonal())
     {
         FatalErrorInFunction
-            << "The matrix of " << fieldName_ << " is not symmetric: the "
+            << "system/fvSolution: solvers." << fieldName_ << ": the matrix "
+            << "of " << fieldName_ << " is not symmetric; the "
             << "envelopeCholesky preconditioner (for PCG) needs a symmetric "
-            << "one" << exit(FatalError);
+            << "one. Use PBiCGStab with DILU for " << fieldName_
+            << exit(FatalError);
     }
 
     collectEntries(sol, diag_, entryCell0_, entryCell1_, entryValue_);
@@ -230,7 +260,7 @@ Foam::demCoupling::envelopeCholesky::envelopeCholesky
         sign_ = -1;
     }
 
-    layOut();
+    layOut(maxEntriesPerCell);
     factorise();
 }
 

@@ -2,7 +2,8 @@
 // Copyright (C) 2026 the interDemFoam authors
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "envelopeCholeskyPreconditioner.H"
-#include "HashPtrTable.H"
+#include "HashTable.H"
+#include "inputCheck.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -22,10 +23,16 @@ namespace demCoupling
 
 namespace
 {
-    //- The kept factors, one per field name
-    Foam::HashPtrTable<Foam::demCoupling::envelopeCholesky>& keptFactors()
+    //- The kept factors, one per field name and mesh (its addressing)
+    Foam::HashTable
+    <
+        std::shared_ptr<const Foam::demCoupling::envelopeCholesky>
+    >& keptFactors()
     {
-        static Foam::HashPtrTable<Foam::demCoupling::envelopeCholesky> kept;
+        static Foam::HashTable
+        <
+            std::shared_ptr<const Foam::demCoupling::envelopeCholesky>
+        > kept;
         return kept;
     }
 
@@ -35,51 +42,48 @@ namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-const Foam::demCoupling::envelopeCholesky&
+std::shared_ptr<const Foam::demCoupling::envelopeCholesky>
 Foam::demCoupling::envelopeCholeskyPreconditioner::factorOf
 (
     const lduMatrix::solver& sol,
     const dictionary& controls
 )
 {
-    HashPtrTable<envelopeCholesky>& kept = keptFactors();
+    auto& kept = keptFactors();
     const word& name = sol.fieldName();
+    const word key
+    (
+        name + "@" + Foam::name(&sol.matrix().lduAddr()),
+        false
+    );
 
-    auto iter = kept.find(name);
+    auto iter = kept.find(key);
     if (iter.found() && iter.val()->sameMatrix(sol))
     {
-        return *iter.val();
+        return iter.val();
     }
-    kept.erase(name);
 
-    const scalar maxEnvelopePerCell =
-        controls.lookupOrDefault<scalar>("maxEnvelopePerCell", 2000);
+    // The preconditioner's own dictionary (empty when it is given as a
+    // word): its keywords checked, the limit > 0
+    inputCheck::keywords(controls, {"preconditioner", "maxEnvelopePerCell"});
+    const scalar maxEnvelopePerCell = inputCheck::getOrDefault<scalar>
+    (
+        controls, "maxEnvelopePerCell", 2000, &inputCheck::positive,
+        "> 0 (entries of the factor per cell, a memory limit)"
+    );
 
-    autoPtr<envelopeCholesky> factor(new envelopeCholesky(sol));
+    std::shared_ptr<const envelopeCholesky> factor
+    (
+        std::make_shared<const envelopeCholesky>(sol, maxEnvelopePerCell)
+    );
     ++factorisationCount;
 
-    const label nCells = sol.matrix().diag().size();
-    if (factor->envelopeSize() > maxEnvelopePerCell*max(nCells, label(1)))
-    {
-        const label size = factor->envelopeSize();
-        FatalIOErrorInFunction(controls)
-            << "The envelopeCholesky preconditioner of " << name
-            << " would keep " << size << " entries for " << nCells
-            << " cells (" << scalar(size)/max(nCells, label(1))
-            << " per cell), more than maxEnvelopePerCell "
-            << maxEnvelopePerCell << ". Use preconditioner DIC, or GAMG, "
-            << "for " << name << " in system/fvSolution, or raise "
-            << "maxEnvelopePerCell in its preconditioner dictionary"
-            << exit(FatalIOError);
-    }
-
     Info<< "envelopeCholesky: factorised the matrix of " << name << ": "
-        << nCells << " cells, " << factor->envelopeSize()
+        << sol.matrix().diag().size() << " cells, " << factor->envelopeSize()
         << " entries in the envelope" << endl;
 
-    const envelopeCholesky& made = *factor;
-    kept.set(name, factor);
-    return made;
+    kept.set(key, factor);
+    return factor;
 }
 
 
@@ -113,5 +117,5 @@ void Foam::demCoupling::envelopeCholeskyPreconditioner::precondition
     const direction
 ) const
 {
-    factor_.solve(wA, rA);
+    factor_->solve(wA, rA);
 }

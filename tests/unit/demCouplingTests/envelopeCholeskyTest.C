@@ -152,7 +152,7 @@ TEST(envelopeCholesky, IndefiniteMatrixNamesTheField)
     (
         [&]{ eqn.solve(solverDict("envelopeCholesky")); }
     );
-    EXPECT_NE(msg.find("The matrix of psiEnvelope is not definite"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("the matrix of psiEnvelope is not definite"), std::string::npos) << msg;
     EXPECT_NE(msg.find("use DIC or GAMG"), std::string::npos) << msg;
 }
 
@@ -174,6 +174,13 @@ TEST(envelopeCholesky, EnvelopeAboveTheLimitNamesTheKeyword)
     const std::string msg = errorMessage([&]{ eqn.solve(dict); });
     EXPECT_NE(msg.find("more than maxEnvelopePerCell 2"), std::string::npos) << msg;
     EXPECT_NE(msg.find("psiEnvelopeLimit"), std::string::npos) << msg;
+
+    // a limit that is not > 0: the keyword, the value and the rule
+    preconditioner.set("maxEnvelopePerCell", -1);
+    dict.set("preconditioner", preconditioner);
+    const std::string negative = errorMessage([&]{ eqn.solve(dict); });
+    EXPECT_NE(negative.find("maxEnvelopePerCell -1"), std::string::npos) << negative;
+    EXPECT_NE(negative.find("must be > 0"), std::string::npos) << negative;
 
     // the default limit: it runs
     EXPECT_LE(solveWith(*psi, 0, "envelopeCholesky"), 2);
