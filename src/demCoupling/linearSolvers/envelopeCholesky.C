@@ -18,17 +18,22 @@ void Foam::demCoupling::envelopeCholesky::collectEntries
 )
 {
     const lduMatrix& matrix = sol.matrix();
-    const labelUList& lowerAddr = matrix.lduAddr().lowerAddr();
-    const labelUList& upperAddr = matrix.lduAddr().upperAddr();
 
     diag = matrix.diag();
+
+    // One entry per internal face, then the cyclic face pairs
+    DynamicList<label> entries0(matrix.lduAddr().lowerAddr());
+    DynamicList<label> entries1(matrix.lduAddr().upperAddr());
+    DynamicList<scalar> entryValues
+    (
+        matrix.hasUpper()
+      ? matrix.upper()
+      : scalarField(entries0.size(), Zero)
+    );
 
     // Cyclic faces: A(i, j) = -bouCoeff (lduMatrix::Amul subtracts
     // bouCoeff times the neighbour's value), each pair once, from the
     // owner side
-    DynamicList<label> coupled0;
-    DynamicList<label> coupled1;
-    DynamicList<scalar> coupledValue;
     const lduInterfaceFieldPtrsList& interfaces = sol.interfaces();
     forAll(interfaces, patchi)
     {
@@ -63,31 +68,16 @@ void Foam::demCoupling::envelopeCholesky::collectEntries
             }
             else
             {
-                coupled0.append(cells0[facei]);
-                coupled1.append(cells1[facei]);
-                coupledValue.append(-coeffs[facei]);
+                entries0.append(cells0[facei]);
+                entries1.append(cells1[facei]);
+                entryValues.append(-coeffs[facei]);
             }
         }
     }
 
-    const label nFaces = lowerAddr.size();
-    cell0.setSize(nFaces + coupled0.size());
-    cell1.setSize(cell0.size());
-    value.setSize(cell0.size());
-    const scalarField emptyUpper;
-    const scalarField& upper = matrix.hasUpper() ? matrix.upper() : emptyUpper;
-    for (label facei = 0; facei < nFaces; ++facei)
-    {
-        cell0[facei] = lowerAddr[facei];
-        cell1[facei] = upperAddr[facei];
-        value[facei] = upper.size() ? upper[facei] : 0;
-    }
-    forAll(coupled0, pairi)
-    {
-        cell0[nFaces + pairi] = coupled0[pairi];
-        cell1[nFaces + pairi] = coupled1[pairi];
-        value[nFaces + pairi] = coupledValue[pairi];
-    }
+    cell0.transfer(entries0);
+    cell1.transfer(entries1);
+    value.transfer(entryValues);
 }
 
 
