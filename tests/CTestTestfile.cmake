@@ -192,7 +192,7 @@ set_tests_properties(case.quietBed PROPERTIES LABELS "case;coupled;forces" TIMEO
 # Meyer-Peter-Mueller: docs/erosion.md); without fluid-particle forces
 # (negative control) the transport check must fail
 add_test(case.bedload "bash" "cases/bedload.sh")
-set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 300)
+set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 360)
 
 # The scene check before a run (checkDemScene): a measured failure region
 # (centre at dx = d), a safe scene, a coupling step in explicit drag's

@@ -23,7 +23,7 @@
 #     sub-dictionaries, file coupling, a DEM box smaller than the mesh,
 #     restarts without demRestartScript or DEM state, a non-finite particle
 #     also on 2 ranks, bad fluidVelocity and velocityFluctuation values,
-#     eddyLifetime outside source turbulence or not a known word)
+#     eddyLifetime or size outside source turbulence or not a known word)
 #     and its warnings (Rayleigh time, particles outside the mesh);
 #   - the output guard: 3000 identical LIGGGHTS lines run to the end, 12000
 #     are stopped.
@@ -160,6 +160,12 @@ expectError lifetimeWithFixed "Unknown keyword 'eddyLifetime'" "intensity, eddyT
 
 echo "velocityFluctuation { source turbulence; eddyLifetime longest; }" >> constant/couplingProperties
 expectError unknownEddyLifetime "eddyLifetime 'longest'" "crossing" "turnover" "velocityFluctuation"
+
+echo "velocityFluctuation { source turbulence; size energy; }" >> constant/couplingProperties
+expectError unknownFluctuationSize "size 'energy'" "shearStress" "velocityFluctuation"
+
+echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; size shearStress; }" >> constant/couplingProperties
+expectError sizeWithFixed "Unknown keyword 'size'" "intensity, eddyTime and seed" "velocityFluctuation"
 
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts

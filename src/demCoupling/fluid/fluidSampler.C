@@ -113,6 +113,16 @@ Foam::demCoupling::fluidSampler::fluidSampler
                        fluctuation_->eddyLifetime()
                    )
                 << ")" << endl;
+            if (fluctuation_->sizedByShearStress())
+            {
+                Info<< "    sized by the local Reynolds shear stress"
+                    << " (size shearStress): streamwise r.m.s. "
+                    << velocityFluctuation::streamwisePerFrictionVelocity
+                    << " sqrt(nut sqrt(2 S:S)), Nezu & Nakagawa's near-bed"
+                    << " r.m.s. per friction velocity, instead of "
+                    << velocityFluctuation::streamwisePerSqrtK << " sqrt(k)"
+                    << endl;
+            }
         }
         else
         {
@@ -138,10 +148,10 @@ Foam::demCoupling::fluidSampler::fluidSampler
 Foam::label Foam::demCoupling::fluidSampler::width() const
 {
     // Uf, eps, rhoF, muF, gradP [, UfAverage] [, vorticity] [, divTau]
-    // [, k, epsilon]
+    // [, k, epsilon] [, shear]
     return 9 + (velocity_ == velocitySource::cellPoint ? 3 : 0)
       + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0)
-      + (turbulenceFluctuations() ? 2 : 0);
+      + (turbulenceFluctuations() ? 2 : 0) + (sizedByShearStress() ? 1 : 0);
 }
 
 
@@ -173,6 +183,10 @@ void Foam::demCoupling::fluidSampler::pack
     {
         out.put(s.kTurb);
         out.put(s.epsilonTurb);
+    }
+    if (sizedByShearStress())
+    {
+        out.put(s.shearTurb);
     }
 }
 
@@ -206,6 +220,10 @@ void Foam::demCoupling::fluidSampler::unpack
     {
         s.kTurb = in.scalar();
         s.epsilonTurb = in.scalar();
+    }
+    if (sizedByShearStress())
+    {
+        s.shearTurb = in.scalar();
     }
 }
 
@@ -320,6 +338,27 @@ Foam::demCoupling::fluidSampler::sample
                 states[i].epsilonTurb = epsiloni[i];
             }
         }
+        if (sizedByShearStress())
+        {
+            // The Reynolds shear stress over rho, nut sqrt(2 S:S)
+            // (nut |du/dz| in a shear flow)
+            const scalarList sheari
+            (
+                vf.sample
+                (
+                    volScalarField
+                    (
+                        "reynoldsShearStress",
+                        fluid.nut()
+                       *sqrt(2.0)*mag(symm(fvc::grad(U)))
+                    )
+                )
+            );
+            forAll(states, i)
+            {
+                states[i].shearTurb = sheari[i];
+            }
+        }
     }
 
     // Summed over the processors that hold cells of a particle
@@ -353,7 +392,7 @@ Foam::demCoupling::fluidSampler::sample
                 s.Uf += fluctuation_->turbulent
                 (
                     particles.tag[i], t, s.Uf, up_, s.kTurb, s.epsilonTurb,
-                    mag(s.Uf - s.Up)
+                    mag(s.Uf - s.Up), s.shearTurb
                 );
             }
             else

@@ -53,6 +53,20 @@ Foam::demCoupling::velocityFluctuation::eddyLifetimeModelNames
     { eddyLifetimeModel::turnover, "turnover" },
 });
 
+const Foam::Enum
+<
+    Foam::demCoupling::velocityFluctuation::sizeModel
+>
+Foam::demCoupling::velocityFluctuation::sizeModelNames
+({
+    { sizeModel::energy, "k" },
+    { sizeModel::shearStress, "shearStress" },
+});
+
+const Foam::scalar
+Foam::demCoupling::velocityFluctuation::streamwisePerFrictionVelocity =
+    2.30;
+
 const Foam::scalar
 Foam::demCoupling::velocityFluctuation::streamwisePerSqrtK =
     2.30*std::sqrt(2.0/(2.30*2.30 + 1.63*1.63 + 1.27*1.27));
@@ -73,6 +87,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
 :
     source_(fluctuationSource::fixed),
     eddyLifetime_(eddyLifetimeModel::crossing),
+    size_(sizeModel::energy),
     intensity_(0),
     eddyTime_(1),
     seed_(0)
@@ -88,7 +103,8 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     {
         const dictionary& coeffs = inputCheck::subDict
         (
-            dict, "velocityFluctuation", {"source", "eddyLifetime", "seed"}
+            dict, "velocityFluctuation",
+            {"source", "eddyLifetime", "size", "seed"}
         );
         eddyLifetime_ = inputCheck::selectOrDefault
         (
@@ -98,6 +114,13 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
           + lifetimeFormula(eddyLifetimeModel::crossing)
           + ", Gosman & Ioannides; the default) and turnover ("
           + lifetimeFormula(eddyLifetimeModel::turnover) + ")"
+        );
+        size_ = inputCheck::selectOrDefault
+        (
+            coeffs, "size", sizeModelNames, sizeModel::energy,
+            "k (the fluctuation's energy is k; the default) and shearStress"
+            " (2.30 nut sqrt(2 S:S) streamwise, Nezu & Nakagawa's near-bed"
+            " r.m.s. per friction velocity)"
         );
         seed_ = inputCheck::getOrDefault<label>
         (
@@ -133,6 +156,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
 :
     source_(fluctuationSource::fixed),
     eddyLifetime_(eddyLifetimeModel::crossing),
+    size_(sizeModel::energy),
     intensity_(intensity),
     eddyTime_(eddyTime),
     seed_(seed)
@@ -142,11 +166,13 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
 Foam::demCoupling::velocityFluctuation::velocityFluctuation
 (
     const eddyLifetimeModel eddyLifetime,
-    const label seed
+    const label seed,
+    const sizeModel size
 )
 :
     source_(fluctuationSource::turbulence),
     eddyLifetime_(eddyLifetime),
+    size_(size),
     intensity_(0),
     eddyTime_(1),
     seed_(seed)
@@ -277,13 +303,18 @@ Foam::vector Foam::demCoupling::velocityFluctuation::turbulent
     const vector& up,
     const scalar k,
     const scalar epsilon,
-    const scalar slip
+    const scalar slip,
+    const scalar shear
 ) const
 {
     if (!(k > SMALL) || !(epsilon > SMALL))
     {
         return Zero;
     }
+    const scalar sigma =
+        size_ == sizeModel::shearStress
+      ? streamwisePerFrictionVelocity*std::sqrt(max(shear, scalar(0)))
+      : streamwisePerSqrtK*std::sqrt(k);
     // Streamwise along U; where the fluid rests, any horizontal direction
     const scalar magU = mag(U);
     vector es(U/max(magU, VSMALL));
@@ -298,7 +329,7 @@ Foam::vector Foam::demCoupling::velocityFluctuation::turbulent
     }
     const scalar T = lifetime(k, epsilon, slip);
     const int64_t e = int64_t(std::floor(t/T + phase(tag)));
-    return draw(tag, e, es, up, streamwisePerSqrtK*std::sqrt(k));
+    return draw(tag, e, es, up, sigma);
 }
 
 

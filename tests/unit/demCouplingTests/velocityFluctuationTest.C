@@ -9,7 +9,8 @@
 // and the same value for the same particle and time. With the turbulence
 // model as source: the eddy lifetimes of Gosman & Ioannides (crossing) and
 // of the energy-carrying eddies' turnover time k/epsilon (turnover),
-// against their closed forms.
+// against their closed forms; sized by the Reynolds shear stress
+// (size shearStress), the near-bed r.m.s. per friction velocity.
 //
 // Sampling error: over n = 40000 independent draws the mean of a unit
 // normal has a standard error of 1/sqrt(n) = 0.005 and its r.m.s. one of
@@ -286,4 +287,34 @@ TEST(velocityFluctuation, TurnoverEddiesLiveLongerForRestingGrains)
         1,
         0.015
     );
+}
+
+
+// size shearStress: the r.m.s. are Nezu & Nakagawa's near-bed 2.30, 1.63
+// and 1.27 times the friction velocity of the local Reynolds shear stress,
+// u_t = sqrt(shear), whatever k is (here k = 0.037, whose default size
+// would be 1.05 sqrt(k) = 0.20 m/s against 2.30 u_t = 0.46 m/s); no
+// stress, no fluctuation. Tolerances as above (four standard errors).
+TEST(velocityFluctuation, ShearStressSizeHasNezuNakagawasNearBedValues)
+{
+    const scalar k = 0.037, eps = 0.15, shear = 0.04;
+    const vector U(0.5, 0, 0), up(0, 0, 1);
+    const velocityFluctuation model
+    (
+        velocityFluctuation::eddyLifetimeModel::turnover, 9,
+        velocityFluctuation::sizeModel::shearStress
+    );
+    ASSERT_TRUE(model.sizedByShearStress());
+    vector sq(Zero);
+    for (label tag = 1; tag <= n; ++tag)
+    {
+        const vector u(model.turbulent(tag, 3.0, U, up, k, eps, 0.5, shear));
+        sq += cmptMultiply(u, u);
+    }
+    sq /= n;
+    const scalar uTau = Foam::sqrt(shear);
+    EXPECT_NEAR(Foam::sqrt(sq.x())/uTau, 2.30, 2.30*0.015);
+    EXPECT_NEAR(Foam::sqrt(sq.y())/uTau, 1.63, 1.63*0.015);
+    EXPECT_NEAR(Foam::sqrt(sq.z())/uTau, 1.27, 1.27*0.015);
+    EXPECT_EQ(model.turbulent(5, 3.0, U, up, k, eps, 0.5, 0), vector::zero);
 }

@@ -411,9 +411,11 @@ def nearBed(run):
     time the means of eps, u, k and what the fluctuations of the grains
     there have (streamwise r.m.s. 1.05 sqrt(k) over u, eddy lifetime
     l_e/max(sqrt(2k/3), u), l_e = C_mu^0.75 k^1.5/epsilon, epsilon =
-    C_mu k omega: velocityFluctuation source turbulence), and k over u*^2;
-    the layer holding the bed's surface (the lowest with eps > 0.6)
-    marked."""
+    C_mu k omega: velocityFluctuation source turbulence), k over u*^2, the
+    Reynolds shear stress nut du/dz over u*^2 (du/dz from the layers
+    above and below) and the streamwise r.m.s. over u that it gives with
+    velocityFluctuation size shearStress (2.30 sqrt(nut du/dz)); the layer
+    holding the bed's surface (the lowest with eps > 0.6) marked."""
     st = settings(run)
     times = [d for d in os.listdir(run)
              if re.fullmatch(r'[0-9.]+', d) and float(d) > 0]
@@ -424,15 +426,24 @@ def nearBed(run):
     om = internalField(os.path.join(run, t, 'omega'))
     eps = internalField(os.path.join(run, t, 'voidfraction'))
     U = internalField(os.path.join(run, t, 'U'), True)
+    nut = internalField(os.path.join(run, t, 'nut'))
     ustar2 = float(st['theta'])*(RHOS - RHO)*G*0.01/RHO
     print('%s at t = %s s (u*^2 = %.4g m2/s2)' % (run, t, ustar2))
-    print('%-8s %-6s %-7s %-8s %-7s %-9s %-8s %s' % (
-        'z[m]', 'eps', 'u[m/s]', 'k', 'k/u*^2', 'sigma/u', 'T[ms]', ''))
+    print('%-8s %-6s %-7s %-8s %-7s %-9s %-8s %-9s %-9s %s' % (
+        'z[m]', 'eps', 'u[m/s]', 'k', 'k/u*^2', 'sigma/u', 'T[ms]',
+        'R/u*^2', 'sigmaR/u', ''))
     surface = None
-    for j in range(len(k)//(nx*ny)):
+    layers = len(k)//(nx*ny)
+    uLayer = [mean([U[c][0] for c in range(j*nx*ny, (j + 1)*nx*ny)])
+              for j in range(layers)]
+    for j in range(layers):
         cells = range(j*nx*ny, (j + 1)*nx*ny)
         e = mean([eps[c] for c in cells])
-        u = mean([U[c][0] for c in cells])
+        u = uLayer[j]
+        # central difference (one-sided at the ends), as fvc::grad
+        lo, hi = max(j - 1, 0), min(j + 1, layers - 1)
+        dudz = (uLayer[hi] - uLayer[lo])/((hi - lo)*cell)
+        R = mean([nut[c] for c in cells])*abs(dudz)
         kk = mean([k[c] for c in cells])
         w = mean([om[c] for c in cells])
         epsT = 0.09*kk*w
@@ -442,10 +453,12 @@ def nearBed(run):
         if surface is None and e > 0.6:
             surface = j
             mark = '<- the bed surface'
-        print('%-8.3f %-6.3f %-7.3f %-8.4f %-7.3f %-9.3f %-8.3g %s' % (
+        print('%-8.3f %-6.3f %-7.3f %-8.4f %-7.3f %-9.3f %-8.3g %-9.3f %-9.3f %s' % (
             (j + 0.5)*cell, e, u, kk, kk/ustar2,
             1.052*math.sqrt(kk)/abs(u) if abs(u) > 1e-9 else float('nan'),
-            1e3*T, mark))
+            1e3*T, R/ustar2,
+            2.30*math.sqrt(R)/abs(u) if abs(u) > 1e-9 else float('nan'),
+            mark))
 
 
 def onsetMap(outPath, entries):
