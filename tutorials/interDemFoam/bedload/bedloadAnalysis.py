@@ -440,7 +440,8 @@ def nearBed(run):
         cells = range(j*nx*ny, (j + 1)*nx*ny)
         e = mean([eps[c] for c in cells])
         u = uLayer[j]
-        # central difference (one-sided at the ends), as fvc::grad
+        # central difference in the interior (as fvc::grad there);
+        # one-sided at the ends (the bottom layer is the frozen bed)
         lo, hi = max(j - 1, 0), min(j + 1, layers - 1)
         dudz = (uLayer[hi] - uLayer[lo])/((hi - lo)*cell)
         R = mean([nut[c] for c in cells])*abs(dudz)
