@@ -69,6 +69,19 @@ cat small.theta.*/log.bedloadAnalysis
 
 value() { awk -v k="$2" '$1 == k { n++; v = $2 } END { if (n == 1) print v }' "$1"/bedload.summary; }
 
+# requireTransport <run> <what>: sustained transport, q* > 1e-3 in both
+# halves of the run's window; sets half1 and half2 to the halves' q*
+requireTransport()
+{
+    local run=$1 what=$2
+    half1=$(value "$run" qstarHalf1)
+    half2=$(value "$run" qstarHalf2)
+    check "$what: q* first half" "$half1" 'v > 1e-3' \
+        "$what: q* $half1 in the first half of the window, expected > 1e-3"
+    check "$what: q* second half" "$half2" 'v > 1e-3' \
+        "$what: q* $half2 in the second half of the window, expected > 1e-3"
+}
+
 # controlRun <tag> <theta> <what is left out> <the check it guards>: a
 # control run of the small channel that must NOT transport in both halves
 # of the window; sets control1 and control2 to its halves' q*
@@ -91,8 +104,6 @@ controlRun()
 low=small.theta.$thetaLow
 high=small.theta.$thetaHigh
 qLow=$(value $low qstar)
-q1=$(value $high qstarHalf1)
-q2=$(value $high qstarHalf2)
 qHigh=$(value $high qstar)
 grainRatio=$(value $high forceRatio)
 mpm=$(value $high qstarMPM)
@@ -100,10 +111,8 @@ check "below onset: transport flag" "$(value $low transport)" 'v == 0' \
     "theta $thetaLow: sustained transport (q* $qLow), expected none below onset"
 check "below onset: q*" "$qLow" 'v < 1e-3' \
     "theta $thetaLow: q* $qLow above 1e-3, expected none below onset"
-check "above onset: q* first half" "$q1" 'v > 1e-3' \
-    "theta $thetaHigh: q* $q1 in the first half of the window, expected > 1e-3"
-check "above onset: q* second half" "$q2" 'v > 1e-3' \
-    "theta $thetaHigh: q* $q2 in the second half of the window, expected > 1e-3"
+requireTransport $high "above onset, theta $thetaHigh"
+q1=$half1 q2=$half2
 check "above onset: fluid force on the grains / imposed stress" "$grainRatio" \
     'v > 0.9 && v < 1.1' \
     "theta $thetaHigh: the grains carry $grainRatio of rho g S h, expected 1 +- 0.1 (not steady)"
@@ -139,13 +148,9 @@ check "cellPoint: fluid force on the grains / imposed stress" "$cpRatio" \
 cat fluct.theta.$thetaFluct/log.bedloadAnalysis
 grep -q "Turbulent velocity fluctuations seen by the particles" fluct.theta.$thetaFluct/log.interDemFoam \
     || fail "the fluctuation run did not report its velocityFluctuation"
-f1=$(value fluct.theta.$thetaFluct qstarHalf1)
-f2=$(value fluct.theta.$thetaFluct qstarHalf2)
+requireTransport fluct.theta.$thetaFluct "fluctuations, theta $thetaFluct"
+f1=$half1 f2=$half2
 fRatio=$(value fluct.theta.$thetaFluct forceRatio)
-check "fluctuations, theta $thetaFluct: q* first half" "$f1" 'v > 1e-3' \
-    "theta $thetaFluct with fluctuations: q* $f1 in the first half of the window, expected > 1e-3"
-check "fluctuations, theta $thetaFluct: q* second half" "$f2" 'v > 1e-3' \
-    "theta $thetaFluct with fluctuations: q* $f2 in the second half of the window, expected > 1e-3"
 check "fluctuations: fluid force on the grains / imposed stress" "$fRatio" \
     'v > 0.97 && v < 1.03' \
     "theta $thetaFluct with fluctuations: the grains carry $fRatio of rho g S h, expected 1 +- 0.03"
@@ -208,15 +213,11 @@ if grep -q "sized by the local Reynolds shear stress" kSize.theta.$thetaFluct/lo
 then
     fail "the k-sized run reports the shear-stress size"
 fi
-s1=$(value shearSize.theta.$thetaFluct qstarHalf1)
-s2=$(value shearSize.theta.$thetaFluct qstarHalf2)
+requireTransport shearSize.theta.$thetaFluct "shearStress size, theta $thetaFluct"
+s1=$half1 s2=$half2
 qS=$(value shearSize.theta.$thetaFluct qstar)
 sRatio=$(value shearSize.theta.$thetaFluct forceRatio)
 qK=$(value kSize.theta.$thetaFluct qstar)
-check "shearStress size, theta $thetaFluct: q* first half" "$s1" 'v > 1e-3' \
-    "theta $thetaFluct, size shearStress: q* $s1 in the first half of the window, expected > 1e-3"
-check "shearStress size, theta $thetaFluct: q* second half" "$s2" 'v > 1e-3' \
-    "theta $thetaFluct, size shearStress: q* $s2 in the second half of the window, expected > 1e-3"
 check "shearStress size: fluid force on the grains / imposed stress" "$sRatio" \
     'v > 0.9 && v < 1.1' \
     "theta $thetaFluct, size shearStress: the grains carry $sRatio of rho g S h, expected 1 +- 0.1"
