@@ -18,12 +18,13 @@
 #     explicit; demDrag implicit with that fix stops naming both
 #   - an error LIGGGHTS reports in a 2-rank run (Error::one, which calls
 #     MPI_Abort) ends with its message, the command and its script line
-#   - and the rest of docs/reliability.md's table of bad inputs (37 checks:
+#   - and the rest of docs/reliability.md's table of bad inputs (39 checks:
 #     'did you mean' for misspelt keywords, wrong types, ranges, missing
 #     sub-dictionaries, file coupling, a DEM box smaller than the mesh,
 #     restarts without demRestartScript or DEM state, a non-finite particle
 #     also on 2 ranks, bad fluidVelocity and velocityFluctuation values,
-#     eddyLifetime or size outside source turbulence or not a known word)
+#     eddyLifetime, size or sampledAt outside source turbulence or not a
+#     known word)
 #     and its warnings (Rayleigh time, particles outside the mesh);
 #   - the output guard: 3000 identical LIGGGHTS lines run to the end, 12000
 #     are stopped.
@@ -141,7 +142,7 @@ echo "outsideParticles drop;" >> constant/couplingProperties
 expectError badOutsidePolicy "outsideParticles 'drop'" "ignore" "delete"
 
 echo "fluidVelocity centre;" >> constant/couplingProperties
-expectError badFluidVelocity "fluidVelocity 'centre'" "voidFractionAverage" "cellPoint" "couplingProperties"
+expectError badFluidVelocity "fluidVelocity 'centre'" "voidFractionAverage" "cellPoint" "grainTop" "couplingProperties"
 
 echo "velocityFluctuation { intensity -0.1; eddyTime 0.1; }" >> constant/couplingProperties
 expectError negativeIntensity "intensity -0.1" ">= 0" "velocityFluctuation"
@@ -166,6 +167,12 @@ expectError unknownFluctuationSize "size 'energy'" "shearStress" "velocityFluctu
 
 echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; size shearStress; }" >> constant/couplingProperties
 expectError sizeWithFixed "Unknown keyword 'size'" "intensity, eddyTime and seed" "velocityFluctuation"
+
+echo "velocityFluctuation { source turbulence; sampledAt top; }" >> constant/couplingProperties
+expectError unknownSampledAt "sampledAt 'top'" "average" "grainTop" "velocityFluctuation"
+
+echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; sampledAt grainTop; }" >> constant/couplingProperties
+expectError sampledAtWithFixed "Unknown keyword 'sampledAt'" "intensity, eddyTime and seed" "velocityFluctuation"
 
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts

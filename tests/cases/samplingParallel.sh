@@ -26,6 +26,10 @@
 # or a rank drawing other u' gives differences of order one.
 # Negative control: the comparison must fail on F of one run against F of
 # a run with another seed (measured 5.5e-2).
+# The velocity at the particle's top (fluidVelocity grainTop, reconstructed
+# in the host cell from its gradient, host rank only) likewise: 2 ranks
+# within 1e-7 of 1 rank, and its F differs from the default run's by more
+# than 1e-4 of the largest F (the option takes effect).
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 
@@ -114,6 +118,10 @@ runCase sampled-1 1 "$options"
 runCase sampled-2 2 "$options"
 runCase seed-2 2 "fluidVelocity     cellPoint;
 velocityFluctuation { intensity 0.5; eddyTime 0.001; seed 5; }"
+runCase top-1 1 "fluidVelocity     grainTop;"
+runCase top-2 2 "fluidVelocity     grainTop;"
+grep -q "fluidVelocity grainTop" top-2/log.interDemFoam \
+    || fail "the 2-rank run did not report fluidVelocity grainTop"
 grep -q "fluidVelocity cellPoint" sampled-2/log.interDemFoam \
     && grep -q "Turbulent velocity fluctuations seen by the particles" sampled-2/log.interDemFoam \
     || fail "the 2-rank run did not report fluidVelocity cellPoint and its fluctuations"
@@ -121,10 +129,14 @@ grep -q "fluidVelocity cellPoint" sampled-2/log.interDemFoam \
 plain=$(compareRuns plain-1 plain-2) || fail "cannot compare the default runs"
 sampled=$(compareRuns sampled-1 sampled-2) || fail "cannot compare the cellPoint + fluctuation runs"
 control=$(compareRuns sampled-2 seed-2) || fail "cannot compare the seeds"
+top=$(compareRuns top-1 top-2) || fail "cannot compare the grainTop runs"
+topEffect=$(compareRuns plain-1 top-1) || fail "cannot compare grainTop with the default"
 echo "1 rank against 2, largest difference / largest value (F, U, DEM position, DEM velocity):"
 echo "  default:                   $plain"
 echo "  cellPoint + fluctuations:  $sampled"
+echo "  grainTop:                  $top"
 echo "  another seed (control):    $control"
+echo "  grainTop against the default, 1 rank: $topEffect"
 labels="F U position velocity"
 set -- $sampled
 for l in $labels
@@ -133,10 +145,20 @@ do
         "$l differs between 1 and 2 ranks by $1 of its largest value (> $tolerance)"
     shift
 done
+set -- $top
+for l in $labels
+do
+    check "grainTop, 1 against 2 ranks: $l" "$1" "v <= $tolerance" \
+        "$l differs between 1 and 2 ranks by $1 of its largest value (> $tolerance)"
+    shift
+done
+set -- $topEffect
+check "grainTop against the default: F" "$1" "v > 1e-4" \
+    "grainTop gives the default's F within $1 of the largest: the option has no effect"
 set -- $control
 if awk -v v="$1" -v t="$tolerance" 'BEGIN { exit !(v <= t) }'
 then
     fail "negative control: F with another seed agrees within $tolerance ($1): the check cannot fail"
 fi
 echo "negative control: F with another seed differs by $1 (> $tolerance): the check fails on it"
-pass "cellPoint + fluctuations on 2 ranks = 1 rank within $tolerance (F, U, DEM: $sampled; default runs: $plain)"
+pass "cellPoint + fluctuations and grainTop on 2 ranks = 1 rank within $tolerance (F, U, DEM: $sampled and $top; default runs: $plain)"

@@ -13,6 +13,7 @@ Foam::demCoupling::fluidSampler::velocitySourceNames
 ({
     { velocitySource::voidFractionAverage, "voidFractionAverage" },
     { velocitySource::cellPoint, "cellPoint" },
+    { velocitySource::grainTop, "grainTop" },
 });
 
 namespace
@@ -71,27 +72,47 @@ Foam::demCoupling::fluidSampler::fluidSampler
         dict, "fluidVelocity", velocitySourceNames,
         velocitySource::voidFractionAverage,
         "voidFractionAverage (the void-fraction model's weighted average"
-        " over the particle's cells; the default) and cellPoint"
-        " (interpolated at the particle's centre in its host cell)"
+        " over the particle's cells; the default), cellPoint"
+        " (interpolated at the particle's centre in its host cell) and"
+        " grainTop (reconstructed at the particle's top, d/2 above its"
+        " centre against gravity)"
     );
     if (velocity_ == velocitySource::cellPoint)
     {
         Info<< "Fluid velocity at each particle: cell-point interpolation"
             << " at its centre (fluidVelocity cellPoint)" << endl;
     }
-    if (dict.found("velocityFluctuation"))
+    if (velocity_ == velocitySource::grainTop)
     {
-        fluctuation_.reset(new velocityFluctuation(dict));
+        Info<< "Fluid velocity at each particle: at its top, d/2 above its"
+            << " centre against gravity, reconstructed linearly in its host"
+            << " cell and bounded by its neighbours (fluidVelocity grainTop)"
+            << endl;
+    }
+    const bool needUp =
+        velocity_ == velocitySource::grainTop
+     || dict.found("velocityFluctuation");
+    if (needUp)
+    {
         // The solver's gravity (constant/g, read once per run)
         const vector g(meshObjects::gravity::New(mesh.time()).value());
         if (mag(g) < SMALL)
         {
             FatalIOErrorInFunction(dict)
-                << "velocityFluctuation in " << dict.name() << " needs"
-                << " gravity (constant/g, not zero): the fluctuations'"
-                << " vertical direction is against it" << exit(FatalIOError);
+                << (
+                       velocity_ == velocitySource::grainTop
+                     ? "fluidVelocity grainTop"
+                     : "velocityFluctuation"
+                   )
+                << " in " << dict.name() << " needs gravity (constant/g,"
+                << " not zero): a grain's top and the fluctuations'"
+                << " vertical direction are against it" << exit(FatalIOError);
         }
         up_ = -g/mag(g);
+    }
+    if (dict.found("velocityFluctuation"))
+    {
+        fluctuation_.reset(new velocityFluctuation(dict));
         if (fluctuation_->fromTurbulence())
         {
             Info<< "Turbulent velocity fluctuations seen by the particles:"
@@ -113,6 +134,14 @@ Foam::demCoupling::fluidSampler::fluidSampler
                        fluctuation_->eddyLifetime()
                    )
                 << ")" << endl;
+            if (fluctuation_->sampledAtTop())
+            {
+                Info<< "    k, epsilon"
+                    << (fluctuation_->sizedByShearStress() ? " and the shear"
+                        " stress" : "")
+                    << " taken at each particle's top, d/2 above its centre"
+                    << " (sampledAt grainTop)" << endl;
+            }
             if (fluctuation_->sizedByShearStress())
             {
                 Info<< "    sized by the local Reynolds shear stress"
@@ -149,7 +178,7 @@ Foam::label Foam::demCoupling::fluidSampler::width() const
 {
     // Uf, eps, rhoF, muF, gradP [, UfAverage] [, vorticity] [, divTau]
     // [, k, epsilon] [, shear]
-    return 9 + (velocity_ == velocitySource::cellPoint ? 3 : 0)
+    return 9 + (velocityAtPoint() ? 3 : 0)
       + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0)
       + (turbulenceFluctuations() ? 2 : 0) + (sizedByShearStress() ? 1 : 0);
 }
@@ -167,7 +196,7 @@ void Foam::demCoupling::fluidSampler::pack
     out.put(s.rhoF);
     out.put(s.muF);
     out.put(s.gradP);
-    if (velocity_ == velocitySource::cellPoint)
+    if (velocityAtPoint())
     {
         out.put(s.UfAverage);
     }
@@ -204,7 +233,7 @@ void Foam::demCoupling::fluidSampler::unpack
     s.muF = in.scalar();
     s.gradP = in.vector();
     s.UfAverage = s.Uf;
-    if (velocity_ == velocitySource::cellPoint)
+    if (velocityAtPoint())
     {
         s.UfAverage = in.vector();
     }
@@ -259,12 +288,19 @@ Foam::demCoupling::fluidSampler::sample
     {
         const volVectorField& U = fluid.U();
         List<vector> Ui(vf.sample(U));
-        if (velocity_ == velocitySource::cellPoint)
+        if (velocityAtPoint())
         {
             forAll(states, i)
             {
                 states[i].UfAverage = Ui[i];
             }
+        }
+        if (velocity_ == velocitySource::grainTop)
+        {
+            sampleAtTop(U, particles, Ui);
+        }
+        else if (velocity_ == velocitySource::cellPoint)
+        {
             // At the centre, by the host processor alone; the average
             // where no processor hosts the particle
             const interpolationCellPoint<vector> atPoint(U);
@@ -328,10 +364,19 @@ Foam::demCoupling::fluidSampler::sample
                 states[i].divTau = divTau[i];
             }
         }
+        const bool turbulenceAtTop =
+            fluctuation_.valid() && fluctuation_->sampledAtTop();
         if (turbulenceFluctuations())
         {
-            const scalarList ki(vf.sample(fluid.k()()));
-            const scalarList epsiloni(vf.sample(fluid.epsilon()()));
+            const tmp<volScalarField> tk(fluid.k());
+            const tmp<volScalarField> tepsilon(fluid.epsilon());
+            scalarList ki(vf.sample(tk()));
+            scalarList epsiloni(vf.sample(tepsilon()));
+            if (turbulenceAtTop)
+            {
+                sampleAtTop(tk(), particles, ki);
+                sampleAtTop(tepsilon(), particles, epsiloni);
+            }
             forAll(states, i)
             {
                 states[i].kTurb = ki[i];
@@ -342,18 +387,16 @@ Foam::demCoupling::fluidSampler::sample
         {
             // The Reynolds shear stress over rho, nut sqrt(2 S:S)
             // (nut |du/dz| in a shear flow)
-            const scalarList sheari
+            const volScalarField shear
             (
-                vf.sample
-                (
-                    volScalarField
-                    (
-                        "reynoldsShearStress",
-                        fluid.nut()
-                       *sqrt(2.0)*mag(symm(fvc::grad(U)))
-                    )
-                )
+                "reynoldsShearStress",
+                fluid.nut()*sqrt(2.0)*mag(symm(fvc::grad(U)))
             );
+            scalarList sheari(vf.sample(shear));
+            if (turbulenceAtTop)
+            {
+                sampleAtTop(shear, particles, sheari);
+            }
             forAll(states, i)
             {
                 states[i].shearTurb = sheari[i];

@@ -63,6 +63,16 @@ Foam::demCoupling::velocityFluctuation::sizeModelNames
     { sizeModel::shearStress, "shearStress" },
 });
 
+const Foam::Enum
+<
+    Foam::demCoupling::velocityFluctuation::turbulenceSample
+>
+Foam::demCoupling::velocityFluctuation::turbulenceSampleNames
+({
+    { turbulenceSample::average, "average" },
+    { turbulenceSample::grainTop, "grainTop" },
+});
+
 const Foam::scalar
 Foam::demCoupling::velocityFluctuation::streamwisePerFrictionVelocity =
     2.30;
@@ -88,6 +98,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     source_(fluctuationSource::fixed),
     eddyLifetime_(eddyLifetimeModel::crossing),
     size_(sizeModel::energy),
+    sampledAt_(turbulenceSample::average),
     intensity_(0),
     eddyTime_(1),
     seed_(0)
@@ -104,7 +115,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
         const dictionary& coeffs = inputCheck::subDict
         (
             dict, "velocityFluctuation",
-            {"source", "eddyLifetime", "size", "seed"}
+            {"source", "eddyLifetime", "size", "sampledAt", "seed"}
         );
         eddyLifetime_ = inputCheck::selectOrDefault
         (
@@ -121,6 +132,13 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
             "k (the fluctuation's energy is k; the default) and shearStress"
             " (2.30 nut sqrt(2 S:S) streamwise, Nezu & Nakagawa's near-bed"
             " r.m.s. per friction velocity)"
+        );
+        sampledAt_ = inputCheck::selectOrDefault
+        (
+            coeffs, "sampledAt", turbulenceSampleNames,
+            turbulenceSample::average,
+            "average (the void-fraction average over the particle's cells;"
+            " the default) and grainTop (at its top, d/2 above its centre)"
         );
         seed_ = inputCheck::getOrDefault<label>
         (
@@ -157,6 +175,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     source_(fluctuationSource::fixed),
     eddyLifetime_(eddyLifetimeModel::crossing),
     size_(sizeModel::energy),
+    sampledAt_(turbulenceSample::average),
     intensity_(intensity),
     eddyTime_(eddyTime),
     seed_(seed)
@@ -173,6 +192,7 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
     source_(fluctuationSource::turbulence),
     eddyLifetime_(eddyLifetime),
     size_(size),
+    sampledAt_(turbulenceSample::average),
     intensity_(0),
     eddyTime_(1),
     seed_(seed)

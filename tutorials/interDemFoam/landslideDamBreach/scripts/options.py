@@ -32,7 +32,7 @@ PIECE_LENGTH = '20'     # s, the pieces after the first
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
 VARIANTS = ('-width, -cellSize, -voidFraction, -forces, -fluidVelocity, '
-            '-fluctuation, -eddyLifetime, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
+            '-fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
             '-semiImplicitAlpha, -maxTime, -demStep')
 
 
@@ -78,6 +78,7 @@ def check_run_length(o, s):
 def is_variant(o):
     return any(o[k] for k in ('width', 'voidFraction', 'forces',
                               'fluidVelocity', 'fluctuation', 'eddyLifetime',
+                              'fluctuationSize', 'fluctuationAt',
                               'minVoidFraction', 'grading', 'maxTime',
                               'demStep')) \
         or o['cellSize'] != '0.05' or o['bed'] != 'rough' \
@@ -108,9 +109,10 @@ def check_cells(o, s):
 def check_coupling(o, s):
     """-fluidVelocity, -minVoidFraction, -fluctuation, -eddyLifetime,
     -voidFraction."""
-    if o['fluidVelocity'] not in ('', 'voidFractionAverage', 'cellPoint'):
+    if o['fluidVelocity'] not in ('', 'voidFractionAverage', 'cellPoint',
+                                  'grainTop'):
         raise OptionError("-fluidVelocity: use voidFractionAverage (the "
-                          "default) or cellPoint, got '%s'"
+                          "default), cellPoint or grainTop, got '%s'"
                           % o['fluidVelocity'])
     if o['minVoidFraction'] and not number(o['minVoidFraction'],
                                            lambda v: 0 < v < 1):
@@ -145,6 +147,25 @@ def check_coupling(o, s):
         if o['fluctuation'] != 'turbulence':
             raise OptionError("-eddyLifetime is how long a grain keeps an "
                               "eddy of the turbulence model: give "
+                              "-fluctuation turbulence -turbulence kOmegaSST")
+    if o['fluctuationSize']:
+        if o['fluctuationSize'] not in ('k', 'shearStress'):
+            raise OptionError("-fluctuationSize: use k (the default: the "
+                              "eddies' energy is k) or shearStress (the "
+                              "local Reynolds shear stress), got '%s'"
+                              % o['fluctuationSize'])
+        if o['fluctuation'] != 'turbulence':
+            raise OptionError("-fluctuationSize sizes the eddies of the "
+                              "turbulence model: give -fluctuation "
+                              "turbulence -turbulence kOmegaSST")
+    if o['fluctuationAt']:
+        if o['fluctuationAt'] not in ('average', 'grainTop'):
+            raise OptionError("-fluctuationAt: use average (the default: "
+                              "over the grain's cells) or grainTop (at its "
+                              "top), got '%s'" % o['fluctuationAt'])
+        if o['fluctuation'] != 'turbulence':
+            raise OptionError("-fluctuationAt takes the turbulence model's "
+                              "k, epsilon and shear stress at the grain: give "
                               "-fluctuation turbulence -turbulence kOmegaSST")
     if o['voidFraction'] not in ('', 'virtualSphere', 'divided', 'centre'):
         raise OptionError("-voidFraction: unknown model '%s': use "

@@ -25,6 +25,8 @@ forces=""
 fluidVelocity=""
 fluctuation=""
 eddyLifetime=""
+fluctuationSize=""
+fluctuationAt=""
 turbulence=laminar
 minVoidFraction=""
 grading=""
@@ -55,6 +57,8 @@ parseOptions()
             -fluidVelocity) fluidVelocity="$2"; shift ;;
             -fluctuation) fluctuation="$2"; shift ;;
             -eddyLifetime) eddyLifetime="$2"; shift ;;
+            -fluctuationSize) fluctuationSize="$2"; shift ;;
+            -fluctuationAt) fluctuationAt="$2"; shift ;;
             -turbulence) turbulence="$2"; shift ;;
             -minVoidFraction) minVoidFraction="$2"; shift ;;
             -grading)  grading="$2"; shift ;;
@@ -70,7 +74,7 @@ parseOptions()
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
         esac
         shift
     done
@@ -93,6 +97,7 @@ checkOptions()
         width="$widthOption" cellSize="$cellSize" voidFraction="$voidFraction" \
         forces="$forces" fluidVelocity="$fluidVelocity" \
         fluctuation="$fluctuation" eddyLifetime="$eddyLifetime" \
+        fluctuationSize="$fluctuationSize" fluctuationAt="$fluctuationAt" \
         turbulence="$turbulence" \
         minVoidFraction="$minVoidFraction" \
         grading="$grading" bed="$bed" maxTime="$maxTimeOption" \

@@ -206,6 +206,8 @@ if [ "$fluctuation" = turbulence ]
 then
     local lifetime=""
     [ -n "$eddyLifetime" ] && lifetime=" eddyLifetime $eddyLifetime;"
+    [ -n "$fluctuationSize" ] && lifetime="$lifetime size $fluctuationSize;"
+    [ -n "$fluctuationAt" ] && lifetime="$lifetime sampledAt $fluctuationAt;"
     foamDictionary -entry velocityFluctuation -add "{ source turbulence;$lifetime }" \
         "$dir"/constant/couplingProperties > /dev/null || return 1
 elif [ -n "$fluctuation" ]

@@ -1,0 +1,83 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+#include "fluidSampler.H"
+#include "fvc.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+template<class Type>
+void Foam::demCoupling::fluidSampler::sampleAtTop
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld,
+    const particleData& particles,
+    List<Type>& values
+) const
+{
+    const auto gradFld(fvc::grad(fld));
+    forAll(values, i)
+    {
+        const label celli = particles.cell[i];
+        if (particles.hostProc[i] == Pstream::myProcNo() && celli >= 0)
+        {
+            values[i] = reconstructed
+            (
+                fld, gradFld(), celli,
+                particles.position[i] + 0.5*particles.diameter[i]*up_
+            );
+        }
+        else if (particles.hostProc[i] >= 0)
+        {
+            // Another processor hosts it and adds the value
+            values[i] = Zero;
+        }
+        // else: no processor hosts it, the average stays
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class Type>
+Type Foam::demCoupling::fluidSampler::reconstructed
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld,
+    const GeometricField
+    <
+        typename outerProduct<vector, Type>::type, fvPatchField, volMesh
+    >& gradFld,
+    const label celli,
+    const point& p
+)
+{
+    const fvMesh& mesh = fld.mesh();
+    const Type f(fld[celli] + ((p - mesh.C()[celli]) & gradFld[celli]));
+
+    // Bounds: the cell, its face neighbours and its boundary faces
+    Type lo(fld[celli]);
+    Type hi(fld[celli]);
+    for (const label nbr : mesh.cellCells()[celli])
+    {
+        lo = min(lo, fld[nbr]);
+        hi = max(hi, fld[nbr]);
+    }
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    for (const label facei : mesh.cells()[celli])
+    {
+        if (mesh.isInternalFace(facei))
+        {
+            continue;
+        }
+        const label patchi = patches.whichPatch(facei);
+        const fvPatchField<Type>& fb = fld.boundaryField()[patchi];
+        if (fb.empty())
+        {
+            // An empty (2-D) patch has no values
+            continue;
+        }
+        const Type& value = fb[facei - patches[patchi].start()];
+        lo = min(lo, value);
+        hi = max(hi, value);
+    }
+    return max(lo, min(hi, f));
+}

@@ -1,0 +1,187 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+// The velocity at a grain's top (fluidVelocity grainTop,
+// fluidSampler::reconstructed) against closed forms on the unit-test
+// mesh (1 cm cube, cells of 2 mm, walls all round):
+// - a linear field u = (a z, b x, c y) is reconstructed exactly at any
+//   point of an interior cell (Gauss linear gradients of a linear field
+//   are exact on a uniform mesh), to 1e-12 of the field's range;
+// - a step in u (0 below z = 4 mm, 1 above, the bed's top and the flow
+//   over it) is not overshot: at the top of the first cell above the step
+//   the unbounded reconstruction gives 1.475, the bounded one the largest
+//   neighbour value, 1; in the cell below the step the reconstruction lies
+//   inside the bounds (0.725) and is kept;
+// - a linear scalar field (k, epsilon, the shear stress at the top:
+//   velocityFluctuation sampledAt grainTop) likewise, and a point beyond
+//   the upper neighbour is held at its value.
+
+#include <gtest/gtest.h>
+#include "testMain.H"
+#include "fluidSampler.H"
+#include "fvc.H"
+
+using namespace Foam;
+using namespace Foam::demCoupling;
+
+namespace
+{
+
+// A vector field from its value at cell centres and boundary faces
+tmp<volVectorField> fieldOf
+(
+    const fvMesh& mesh,
+    vector (*u)(const point&)
+)
+{
+    auto tU = tmp<volVectorField>::New
+    (
+        IOobject("U", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimVelocity, Zero),
+        calculatedFvPatchVectorField::typeName
+    );
+    volVectorField& U = tU.ref();
+    forAll(U, celli)
+    {
+        U[celli] = u(mesh.C()[celli]);
+    }
+    forAll(U.boundaryField(), patchi)
+    {
+        fvPatchVectorField& Ub = U.boundaryFieldRef()[patchi];
+        const vectorField& Cf = mesh.boundary()[patchi].Cf();
+        forAll(Ub, facei)
+        {
+            Ub[facei] = u(Cf[facei]);
+        }
+    }
+    return tU;
+}
+
+vector linearField(const point& x)
+{
+    return vector(300*x.z(), -200*x.x(), 100*x.y());
+}
+
+vector stepField(const point& x)
+{
+    return vector(x.z() > 0.004 ? 1 : 0, 0, 0);
+}
+
+// The cell whose centre is (i, j, k) cells from the origin corner
+label cellAt(const fvMesh& mesh, const label i, const label j, const label k)
+{
+    const point c(0.002*(i + 0.5), 0.002*(j + 0.5), 0.002*(k + 0.5));
+    const label celli = mesh.findCell(c);
+    EXPECT_GE(celli, 0);
+    return celli;
+}
+
+} // End anonymous namespace
+
+
+TEST(fluidSampler, TopVelocityIsExactForALinearField)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const tmp<volVectorField> tU(fieldOf(mesh, linearField));
+    const volTensorField gradU(fvc::grad(tU()));
+
+    // An interior cell and points in it and up to a cell beyond it (a
+    // grain's top lies up to d/2 above its centre)
+    const label celli = cellAt(mesh, 2, 2, 2);
+    const point C(mesh.C()[celli]);
+    for (const vector& offset :
+        {
+            vector(0, 0, 0.0009), vector(0.0007, -0.0004, 0.0019),
+            vector(-0.0009, 0.0009, 0.0001)
+        })
+    {
+        const point p(C + offset);
+        const vector u
+        (
+            fluidSampler::reconstructed(tU(), gradU, celli, p)
+        );
+        const vector expected(linearField(p));
+        // The field's range over the mesh is 3 m/s
+        EXPECT_NEAR(u.x(), expected.x(), 3e-12) << "at z = " << p.z();
+        EXPECT_NEAR(u.y(), expected.y(), 3e-12) << "at z = " << p.z();
+        EXPECT_NEAR(u.z(), expected.z(), 3e-12) << "at z = " << p.z();
+    }
+}
+
+
+TEST(fluidSampler, TopVelocityDoesNotOvershootAStep)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const tmp<volVectorField> tU(fieldOf(mesh, stepField));
+    const volTensorField gradU(fvc::grad(tU()));
+
+    // First cell above the step (centre z = 5 mm): gradient (1 - 0)/4 mm;
+    // unbounded at z = 6.9 mm: 1 + 250*1.9e-3 = 1.475
+    const label above = cellAt(mesh, 2, 2, 2);
+    EXPECT_NEAR(gradU[above].zx(), 250, 1e-9);
+    const vector uAbove
+    (
+        fluidSampler::reconstructed
+        (
+            tU(), gradU, above, mesh.C()[above] + vector(0, 0, 0.0019)
+        )
+    );
+    EXPECT_DOUBLE_EQ(uAbove.x(), 1.0);
+
+    // The cell below it (centre z = 3 mm): 0 + 250*2.9e-3 = 0.725, inside
+    // [0, 1]: kept
+    const label below = cellAt(mesh, 2, 2, 1);
+    const vector uBelow
+    (
+        fluidSampler::reconstructed
+        (
+            tU(), gradU, below, mesh.C()[below] + vector(0, 0, 0.0029)
+        )
+    );
+    EXPECT_NEAR(uBelow.x(), 0.725, 1e-12);
+    EXPECT_DOUBLE_EQ(uBelow.y(), 0.0);
+}
+
+
+TEST(fluidSampler, TopScalarIsExactForALinearField)
+{
+    // k, epsilon and the shear stress at a grain's top (velocityFluctuation
+    // sampledAt grainTop) take the same reconstruction: f = 2 + 50 x + 400 z
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    volScalarField f
+    (
+        IOobject("k", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        calculatedFvPatchScalarField::typeName
+    );
+    auto linear = [](const point& x) { return 2 + 50*x.x() + 400*x.z(); };
+    forAll(f, celli)
+    {
+        f[celli] = linear(mesh.C()[celli]);
+    }
+    forAll(f.boundaryField(), patchi)
+    {
+        fvPatchScalarField& fb = f.boundaryFieldRef()[patchi];
+        forAll(fb, facei)
+        {
+            fb[facei] = linear(mesh.boundary()[patchi].Cf()[facei]);
+        }
+    }
+    const volVectorField gradF(fvc::grad(f));
+    const label celli = cellAt(mesh, 1, 3, 2);
+    const point p(mesh.C()[celli] + vector(0.0003, 0, 0.0015));
+    // The field's range over the mesh is 4.5
+    EXPECT_NEAR
+    (
+        fluidSampler::reconstructed(f, gradF, celli, p), linear(p), 5e-12
+    );
+    // A point above the cell's neighbours' values is held at their largest
+    const point far(mesh.C()[celli] + vector(0, 0, 0.006));
+    const label above = cellAt(mesh, 1, 3, 3);
+    EXPECT_DOUBLE_EQ
+    (
+        fluidSampler::reconstructed(f, gradF, celli, far), f[above]
+    );
+}
