@@ -241,7 +241,8 @@ echo "ok: size shearStress q* $qS (halves $s1, $s2) against $qK sized by k"
 # half of it in the bed): measured q* ratios 6.5 and 6.4 in the tutorial's
 # channel at theta 0.25 and 0.3, 4.3 here (0.0293 against 6.9e-3). Control: a build in
 # which grainTop falls back to the average repeats the shearSize run (the
-# same draws and forces), a ratio of 1, and fails.
+# same draws and forces), a ratio of 1, and fails (run by hand: q* 6.85e-3
+# with both).
 ./Allrun -size small -tag grainTop -eddyLifetime turnover -fluctuationSize shearStress \
     -fluidVelocity grainTop -theta "$thetaFluct" -endTime $endTime > log.Allrun.grainTop 2>&1 \
     || { tail -20 log.Allrun.grainTop; fail "Allrun -fluidVelocity grainTop (log.Allrun.grainTop)"; }
