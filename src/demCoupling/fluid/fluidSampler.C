@@ -295,30 +295,37 @@ Foam::demCoupling::fluidSampler::sample
                 states[i].UfAverage = Ui[i];
             }
         }
+        // grad(U), once per step, for whichever of grainTop, the viscous
+        // stress and the shear stress needs it
+        tmp<volTensorField> tgradU;
+        if
+        (
+            velocity_ == velocitySource::grainTop
+         || needViscousStress_ || sizedByShearStress()
+        )
+        {
+            tgradU = fvc::grad(U);
+        }
         if (velocity_ == velocitySource::grainTop)
         {
-            sampleAtTop(U, particles, Ui);
+            sampleAtTop(U, tgradU(), particles, Ui);
         }
         else if (velocity_ == velocitySource::cellPoint)
         {
-            // At the centre, by the host processor alone; the average
-            // where no processor hosts the particle
+            // At the centre, by the host processor alone
             const interpolationCellPoint<vector> atPoint(U);
-            forAll(Ui, i)
-            {
-                if (particles.hostProc[i] == Pstream::myProcNo())
+            sampleOnHost
+            (
+                particles, Ui,
+                [&](const label i)
                 {
-                    Ui[i] = atPoint.interpolate
+                    return atPoint.interpolate
                     (
                         particles.position[i],
                         particles.cell[i]
                     );
                 }
-                else if (particles.hostProc[i] >= 0)
-                {
-                    Ui[i] = Zero;
-                }
-            }
+            );
         }
         const scalarList epsi(vf.sample(voidfraction));
         const scalarList rhoi(vf.sample(fluid.rho()));
@@ -347,7 +354,7 @@ Foam::demCoupling::fluidSampler::sample
         {
             // tau = mu (grad(U) + grad(U)^T - 2/3 div(U) I)
             const volScalarField mu(fluid.mu());
-            const volTensorField gradU(fvc::grad(U));
+            const volTensorField& gradU = tgradU();
             const List<vector> divTau
             (
                 vf.sample
@@ -374,8 +381,11 @@ Foam::demCoupling::fluidSampler::sample
             scalarList epsiloni(vf.sample(tepsilon()));
             if (turbulenceAtTop)
             {
-                sampleAtTop(tk(), particles, ki);
-                sampleAtTop(tepsilon(), particles, epsiloni);
+                sampleAtTop(tk(), fvc::grad(tk())(), particles, ki);
+                sampleAtTop
+                (
+                    tepsilon(), fvc::grad(tepsilon())(), particles, epsiloni
+                );
             }
             forAll(states, i)
             {
@@ -390,12 +400,12 @@ Foam::demCoupling::fluidSampler::sample
             const volScalarField shear
             (
                 "reynoldsShearStress",
-                fluid.nut()*sqrt(2.0)*mag(symm(fvc::grad(U)))
+                fluid.nut()*sqrt(2.0)*mag(symm(tgradU()))
             );
             scalarList sheari(vf.sample(shear));
             if (turbulenceAtTop)
             {
-                sampleAtTop(shear, particles, sheari);
+                sampleAtTop(shear, fvc::grad(shear)(), particles, sheari);
             }
             forAll(states, i)
             {

@@ -6,25 +6,19 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
-template<class Type>
-void Foam::demCoupling::fluidSampler::sampleAtTop
+template<class Type, class AtHost>
+void Foam::demCoupling::fluidSampler::sampleOnHost
 (
-    const GeometricField<Type, fvPatchField, volMesh>& fld,
     const particleData& particles,
-    List<Type>& values
-) const
+    List<Type>& values,
+    const AtHost& atHost
+)
 {
-    const auto gradFld(fvc::grad(fld));
     forAll(values, i)
     {
-        const label celli = particles.cell[i];
-        if (particles.hostProc[i] == Pstream::myProcNo() && celli >= 0)
+        if (particles.hostProc[i] == Pstream::myProcNo())
         {
-            values[i] = reconstructed
-            (
-                fld, gradFld(), celli,
-                particles.position[i] + 0.5*particles.diameter[i]*up_
-            );
+            values[i] = atHost(i);
         }
         else if (particles.hostProc[i] >= 0)
         {
@@ -33,6 +27,33 @@ void Foam::demCoupling::fluidSampler::sampleAtTop
         }
         // else: no processor hosts it, the average stays
     }
+}
+
+
+template<class Type>
+void Foam::demCoupling::fluidSampler::sampleAtTop
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld,
+    const GeometricField
+    <
+        typename outerProduct<vector, Type>::type, fvPatchField, volMesh
+    >& gradFld,
+    const particleData& particles,
+    List<Type>& values
+) const
+{
+    sampleOnHost
+    (
+        particles, values,
+        [&](const label i)
+        {
+            return reconstructed
+            (
+                fld, gradFld, particles.cell[i],
+                particles.position[i] + 0.5*particles.diameter[i]*up_
+            );
+        }
+    );
 }
 
 

@@ -138,35 +138,30 @@ def check_coupling(o, s):
                               "(>= 0) and the eddy time (s, > 0), or "
                               "turbulence, got '%s'"
                               % o['fluctuation'])
-    if o['eddyLifetime']:
-        if o['eddyLifetime'] not in ('crossing', 'turnover'):
-            raise OptionError("-eddyLifetime: use crossing (the default: the "
-                              "time the flow takes to carry an eddy past the "
-                              "grain) or turnover (k/epsilon), got '%s'"
-                              % o['eddyLifetime'])
+    # the choices of velocityFluctuation source turbulence: the option, its
+    # words, what they mean and what the option does (for the message
+    # without -fluctuation turbulence)
+    for key, words, meaning, needs in (
+            ('eddyLifetime', ('crossing', 'turnover'),
+             "crossing (the default: the time the flow takes to carry an "
+             "eddy past the grain) or turnover (k/epsilon)",
+             "is how long a grain keeps an eddy of the turbulence model"),
+            ('fluctuationSize', ('k', 'shearStress'),
+             "k (the default: the eddies' energy is k) or shearStress (the "
+             "local Reynolds shear stress)",
+             "sizes the eddies of the turbulence model"),
+            ('fluctuationAt', ('average', 'grainTop'),
+             "average (the default: over the grain's cells) or grainTop (at "
+             "its top)",
+             "takes the turbulence model's k, epsilon and shear stress at "
+             "the grain")):
+        if not o[key]:
+            continue
+        if o[key] not in words:
+            raise OptionError("-%s: use %s, got '%s'" % (key, meaning, o[key]))
         if o['fluctuation'] != 'turbulence':
-            raise OptionError("-eddyLifetime is how long a grain keeps an "
-                              "eddy of the turbulence model: give "
-                              "-fluctuation turbulence -turbulence kOmegaSST")
-    if o['fluctuationSize']:
-        if o['fluctuationSize'] not in ('k', 'shearStress'):
-            raise OptionError("-fluctuationSize: use k (the default: the "
-                              "eddies' energy is k) or shearStress (the "
-                              "local Reynolds shear stress), got '%s'"
-                              % o['fluctuationSize'])
-        if o['fluctuation'] != 'turbulence':
-            raise OptionError("-fluctuationSize sizes the eddies of the "
-                              "turbulence model: give -fluctuation "
-                              "turbulence -turbulence kOmegaSST")
-    if o['fluctuationAt']:
-        if o['fluctuationAt'] not in ('average', 'grainTop'):
-            raise OptionError("-fluctuationAt: use average (the default: "
-                              "over the grain's cells) or grainTop (at its "
-                              "top), got '%s'" % o['fluctuationAt'])
-        if o['fluctuation'] != 'turbulence':
-            raise OptionError("-fluctuationAt takes the turbulence model's "
-                              "k, epsilon and shear stress at the grain: give "
-                              "-fluctuation turbulence -turbulence kOmegaSST")
+            raise OptionError("-%s %s: give -fluctuation turbulence "
+                              "-turbulence kOmegaSST" % (key, needs))
     if o['voidFraction'] not in ('', 'virtualSphere', 'divided', 'centre'):
         raise OptionError("-voidFraction: unknown model '%s': use "
                           "virtualSphere, divided or centre" % o['voidFraction'])

@@ -204,11 +204,11 @@ then
 fi
 if [ "$fluctuation" = turbulence ]
 then
-    local lifetime=""
-    [ -n "$eddyLifetime" ] && lifetime=" eddyLifetime $eddyLifetime;"
-    [ -n "$fluctuationSize" ] && lifetime="$lifetime size $fluctuationSize;"
-    [ -n "$fluctuationAt" ] && lifetime="$lifetime sampledAt $fluctuationAt;"
-    foamDictionary -entry velocityFluctuation -add "{ source turbulence;$lifetime }" \
+    local entries=""
+    [ -n "$eddyLifetime" ] && entries=" eddyLifetime $eddyLifetime;"
+    [ -n "$fluctuationSize" ] && entries="$entries size $fluctuationSize;"
+    [ -n "$fluctuationAt" ] && entries="$entries sampledAt $fluctuationAt;"
+    foamDictionary -entry velocityFluctuation -add "{ source turbulence;$entries }" \
         "$dir"/constant/couplingProperties > /dev/null || return 1
 elif [ -n "$fluctuation" ]
 then
