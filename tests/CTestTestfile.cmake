@@ -163,6 +163,9 @@ set_tests_properties(case.liftSaffman PROPERTIES LABELS "case;coupled;forces" TI
 add_test(case.liftMagnus "bash" "cases/liftForces.sh" "magnus")
 set_tests_properties(case.liftMagnus PROPERTIES LABELS "case;coupled;forces" TIMEOUT 120)
 
+add_test(case.liftWibergSmith "bash" "cases/liftForces.sh" "wibergSmith")
+set_tests_properties(case.liftWibergSmith PROPERTIES LABELS "case;coupled;forces" TIMEOUT 120)
+
 add_test(case.fluidVelocityCellPoint "bash" "cases/liftForces.sh" "sampling")
 set_tests_properties(case.fluidVelocityCellPoint PROPERTIES LABELS "case;coupled;forces" TIMEOUT 180)
 
@@ -192,7 +195,7 @@ set_tests_properties(case.quietBed PROPERTIES LABELS "case;coupled;forces" TIMEO
 # Meyer-Peter-Mueller: docs/erosion.md); without fluid-particle forces
 # (negative control) the transport check must fail
 add_test(case.bedload "bash" "cases/bedload.sh")
-set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 360)
+set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 600)
 
 # The scene check before a run (checkDemScene): a measured failure region
 # (centre at dx = d), a safe scene, a coupling step in explicit drag's

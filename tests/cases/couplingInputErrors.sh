@@ -174,6 +174,14 @@ expectError unknownSampledAt "sampledAt 'top'" "average" "grainTop" "velocityFlu
 echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; sampledAt grainTop; }" >> constant/couplingProperties
 expectError sampledAtWithFixed "Unknown keyword 'sampledAt'" "intensity, eddyTime and seed" "velocityFluctuation"
 
+# the bed lift's coefficient: required, in range
+sed -i 's/^forces .*/forces ( DiFeliceDrag WibergSmithLift );/' constant/couplingProperties
+expectError liftNoCoefficient "WibergSmithLift needs liftCoefficient" "WibergSmithLiftCoeffs" "between 0 and 2"
+
+sed -i 's/^forces .*/forces ( DiFeliceDrag WibergSmithLift );/' constant/couplingProperties
+echo "WibergSmithLiftCoeffs { liftCoefficient 3; }" >> constant/couplingProperties
+expectError liftCoefficientRange "liftCoefficient 3" "between 0 and 2" "WibergSmithLiftCoeffs"
+
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts
 sed -i 's/^create_atoms .*/create_atoms    1 single 0.01 0.01 0.05 units box/' DEM/in.liggghts

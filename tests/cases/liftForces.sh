@@ -40,6 +40,21 @@
 #       centre model's host-cell value, G 10 mm): F_z 11 % above the
 #       9 mm value, so the 9 mm check fails on it; it must match the 10 mm
 #       value instead.
+#   liftForces.sh wibergSmith   bed lift from the flow over a grain's top and
+#       under its bottom (WibergSmithLift.H, Wiberg & Smith 1985): the
+#       Couette flow of the Saffman case with gravity (0 0 -9.81), C_L 0.2,
+#       the particle at rest at z_p = 10 mm. Its top and bottom, z_p +- d/2,
+#       lie in its cell, where the reconstruction of the linear profile is
+#       exact: u_T,B = G (z_p +- d/2), and
+#         F = 1/2 C_L rho (pi d^2/4) (u_T^2 - u_B^2) z
+#           = C_L rho (pi d^2/4) G^2 z_p d z = 1.5708e-9 N z.
+#       The same particle leading the flow (v = 2 G z_p along x): the
+#       relative velocities swap sizes and F must point to -z with the same
+#       magnitude; the +z check fails on it. Moving with the flow at its
+#       centre (v = G z_p): the top and the bottom see the same relative
+#       speed and F must vanish (below 1 % of the lagging value). Build
+#       control, run by hand: a library that samples the bottom at the top
+#       (height +d/2 for both) gives F = 0 and fails.
 #
 # Tolerance 2 % on the magnitude, and the other two components below 1 % of
 # it. The imposed flows are exact solutions that the mesh represents
@@ -60,6 +75,7 @@ tolerance=0.02
 # run <name> <force model> <flow: couette | couetteReversed | uniform>
 # <DEM motion> [<particle's z> [<fluidVelocity>]]: the case
 # in tests/run/liftForces-<name>; sets force to the particle's "Fx Fy Fz"
+# (WibergSmithLift: with gravity, C_L 0.2)
 run()
 {
     local name=$1 model=$2 ubody=$3 motion=$4 zp=${5:-0.01} sampling=${6:-}
@@ -67,6 +83,13 @@ run()
     rm -rf "$dir" && mkdir -p "$runDir" && cp -r "$testsDir/cases/liftForces" "$dir" \
         && cd "$dir" || fail "cannot set up $dir"
     setEntry constant/couplingProperties forces "( $model )"
+    if [ "$model" = WibergSmithLift ]
+    then
+        foamDictionary -entry WibergSmithLiftCoeffs -add "{ liftCoefficient 0.2; }" \
+            constant/couplingProperties > /dev/null || fail "$name: cannot set C_L"
+        foamDictionary -entry value -set "(0 0 -9.81)" constant/g > /dev/null \
+            || fail "$name: cannot set gravity"
+    fi
     printf '%s\n' "$motion" > DEM/in.motion
     sed -i "s/^create_atoms    1 single 0.006 0.006 0.01 units box$/create_atoms    1 single 0.006 0.006 $zp units box/" \
         DEM/in.liggghts
@@ -204,7 +227,26 @@ sampling)
     pass "fluid velocity at the particle's centre: F_z $f9 N at 9 mm (eq. 15 with u = G z_p: $F9 N)," \
          "$f115 N at 11.5 mm ($F115 N); the cell average gives $fc N at 9 mm (the centre's $F10 N)"
     ;;
+wibergSmith)
+    G=1; zp=0.01
+    Fz=$(awk -v d=$d -v r=$rho -v G=$G -v z=$zp \
+        'BEGIN { printf "%.6e", 0.2*r*atan2(0, -1)/4*d*d*G*G*z*d }')
+    run wibergSmith WibergSmithLift couette "# held at rest (no integration)"; f=$force
+    checkForce "Wiberg-Smith, grain at rest" "$f" 3 "$Fz"
+    run wibergSmithLeading WibergSmithLift couette "velocity all set 0.02 0 0 units box"; fc=$force
+    mustFail "Wiberg-Smith, grain leading the flow, against the resting grain's +z" \
+        checkForce "Wiberg-Smith, leading grain" "$fc" 3 "$Fz"
+    checkForce "Wiberg-Smith, leading grain (-z)" "$fc" 3 "-$Fz"
+    run wibergSmithWithFlow WibergSmithLift couette "velocity all set 0.01 0 0 units box"; f0=$force
+    set -- $f0
+    requireNumber "Wiberg-Smith, with the flow: Fz" "$3"
+    check "Wiberg-Smith, grain moving with the flow at its centre" "$3" \
+        "v < 0.01*$Fz && -v < 0.01*$Fz" \
+        "grain moving with the flow at its centre: F_z = $3 N, not below 1 % of $Fz N"
+    pass "Wiberg-Smith lift $f N against (0 0 $Fz) N;" \
+         "leading the flow: $fc N; moving with it: $f0 N"
+    ;;
 *)
-    fail "unknown mode '$mode' (saffman | magnus | sampling)"
+    fail "unknown mode '$mode' (saffman | magnus | sampling | wibergSmith)"
     ;;
 esac

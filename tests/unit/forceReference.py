@@ -32,3 +32,7 @@ d,rho,mu=1e-3,1000,1e-3; U=0.05; gamma=20.0
 print('Saffman Fy %.12e'%(1.61*d*d*math.sqrt(mu*rho)*gamma**-0.5*U*gamma))
 V=0.1; Om=50.0
 print('Magnus Fy %.12e'%(pi/8*d**3*rho*Om*V))
+# Wiberg & Smith bed lift: C_L 0.2, d 10 mm, water, grain at rest, 0.5 m/s
+# over its top and 0.1 m/s under its bottom
+CL,d,rho=0.2,0.01,1000.0
+print('WibergSmith Fz %.12e'%(0.5*CL*rho*pi/4*d*d*(0.5**2-0.1**2)))

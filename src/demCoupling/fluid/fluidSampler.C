@@ -65,8 +65,17 @@ Foam::demCoupling::fluidSampler::fluidSampler
     up_(0, 0, 1),
     dictName_(dict.name()),
     needVorticity_(false),
-    needViscousStress_(false)
+    needViscousStress_(false),
+    needTopAndBottom_(false)
 {
+    for (const forceModel& model : forces)
+    {
+        needVorticity_ = needVorticity_ || model.needsVorticity();
+        needViscousStress_ = needViscousStress_ || model.needsViscousStress();
+        needTopAndBottom_ =
+            needTopAndBottom_ || model.needsTopAndBottomVelocity();
+    }
+
     velocity_ = inputCheck::selectOrDefault
     (
         dict, "fluidVelocity", velocitySourceNames,
@@ -91,6 +100,7 @@ Foam::demCoupling::fluidSampler::fluidSampler
     }
     const bool needUp =
         velocity_ == velocitySource::grainTop
+     || needTopAndBottom_
      || dict.found("velocityFluctuation");
     if (needUp)
     {
@@ -102,6 +112,9 @@ Foam::demCoupling::fluidSampler::fluidSampler
                 << (
                        velocity_ == velocitySource::grainTop
                      ? "fluidVelocity grainTop"
+                     : needTopAndBottom_
+                     ? "A force model that takes the velocity at a grain's"
+                       " top and bottom (WibergSmithLift)"
                      : "velocityFluctuation"
                    )
                 << " in " << dict.name() << " needs gravity (constant/g,"
@@ -164,11 +177,6 @@ Foam::demCoupling::fluidSampler::fluidSampler
         }
     }
 
-    for (const forceModel& model : forces)
-    {
-        needVorticity_ = needVorticity_ || model.needsVorticity();
-        needViscousStress_ = needViscousStress_ || model.needsViscousStress();
-    }
 }
 
 
@@ -177,10 +185,11 @@ Foam::demCoupling::fluidSampler::fluidSampler
 Foam::label Foam::demCoupling::fluidSampler::width() const
 {
     // Uf, eps, rhoF, muF, gradP [, UfAverage] [, vorticity] [, divTau]
-    // [, k, epsilon] [, shear]
+    // [, k, epsilon] [, shear] [, UfTop, UfBottom]
     return 9 + (velocityAtPoint() ? 3 : 0)
       + (needVorticity_ ? 3 : 0) + (needViscousStress_ ? 3 : 0)
-      + (turbulenceFluctuations() ? 2 : 0) + (sizedByShearStress() ? 1 : 0);
+      + (turbulenceFluctuations() ? 2 : 0) + (sizedByShearStress() ? 1 : 0)
+      + (needTopAndBottom_ ? 6 : 0);
 }
 
 
@@ -216,6 +225,11 @@ void Foam::demCoupling::fluidSampler::pack
     if (sizedByShearStress())
     {
         out.put(s.shearTurb);
+    }
+    if (needTopAndBottom_)
+    {
+        out.put(s.UfTop);
+        out.put(s.UfBottom);
     }
 }
 
@@ -253,6 +267,11 @@ void Foam::demCoupling::fluidSampler::unpack
     if (sizedByShearStress())
     {
         s.shearTurb = in.scalar();
+    }
+    if (needTopAndBottom_)
+    {
+        s.UfTop = in.vector();
+        s.UfBottom = in.vector();
     }
 }
 
@@ -300,15 +319,29 @@ Foam::demCoupling::fluidSampler::sample
         tmp<volTensorField> tgradU;
         if
         (
-            velocity_ == velocitySource::grainTop
+            velocity_ == velocitySource::grainTop || needTopAndBottom_
          || needViscousStress_ || sizedByShearStress()
         )
         {
             tgradU = fvc::grad(U);
         }
+        if (needTopAndBottom_)
+        {
+            // At the top and the bottom of each grain, by its host
+            // processor (a grain no processor hosts keeps the average)
+            List<vector> top(Ui);
+            List<vector> bottom(Ui);
+            sampleAtHeight(U, tgradU(), particles, 0.5, top);
+            sampleAtHeight(U, tgradU(), particles, -0.5, bottom);
+            forAll(states, i)
+            {
+                states[i].UfTop = top[i];
+                states[i].UfBottom = bottom[i];
+            }
+        }
         if (velocity_ == velocitySource::grainTop)
         {
-            sampleAtTop(U, tgradU(), particles, Ui);
+            sampleAtHeight(U, tgradU(), particles, 0.5, Ui);
         }
         else if (velocity_ == velocitySource::cellPoint)
         {
@@ -381,10 +414,11 @@ Foam::demCoupling::fluidSampler::sample
             scalarList epsiloni(vf.sample(tepsilon()));
             if (turbulenceAtTop)
             {
-                sampleAtTop(tk(), fvc::grad(tk())(), particles, ki);
-                sampleAtTop
+                sampleAtHeight(tk(), fvc::grad(tk())(), particles, 0.5, ki);
+                sampleAtHeight
                 (
-                    tepsilon(), fvc::grad(tepsilon())(), particles, epsiloni
+                    tepsilon(), fvc::grad(tepsilon())(), particles, 0.5,
+                    epsiloni
                 );
             }
             forAll(states, i)
@@ -405,7 +439,10 @@ Foam::demCoupling::fluidSampler::sample
             scalarList sheari(vf.sample(shear));
             if (turbulenceAtTop)
             {
-                sampleAtTop(shear, fvc::grad(shear)(), particles, sheari);
+                sampleAtHeight
+                (
+                    shear, fvc::grad(shear)(), particles, 0.5, sheari
+                );
             }
             forAll(states, i)
             {
@@ -430,6 +467,10 @@ Foam::demCoupling::fluidSampler::sample
         s.omega = particles.omega[i];
         s.d = particles.diameter[i];
         s.rhoP = particles.density[i];
+        if (needTopAndBottom_)
+        {
+            s.up = up_;
+        }
     }
 
     // Turbulent fluctuations, from the combined (same on every processor)
@@ -440,18 +481,20 @@ Foam::demCoupling::fluidSampler::sample
         forAll(states, i)
         {
             particleFluidState& s = states[i];
-            if (fluctuation_->fromTurbulence())
-            {
-                s.Uf += fluctuation_->turbulent
+            const vector uPrime
+            (
+                fluctuation_->fromTurbulence()
+              ? fluctuation_->turbulent
                 (
                     particles.tag[i], t, s.Uf, up_, s.kTurb, s.epsilonTurb,
                     mag(s.Uf - s.Up), s.shearTurb
-                );
-            }
-            else
-            {
-                s.Uf += (*fluctuation_)(particles.tag[i], t, s.Uf, up_);
-            }
+                )
+              : (*fluctuation_)(particles.tag[i], t, s.Uf, up_)
+            );
+            s.Uf += uPrime;
+            // The same eddy passes over the grain's top and bottom
+            s.UfTop += uPrime;
+            s.UfBottom += uPrime;
         }
     }
     return states;

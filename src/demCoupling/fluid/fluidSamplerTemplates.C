@@ -31,7 +31,7 @@ void Foam::demCoupling::fluidSampler::sampleOnHost
 
 
 template<class Type>
-void Foam::demCoupling::fluidSampler::sampleAtTop
+void Foam::demCoupling::fluidSampler::sampleAtHeight
 (
     const GeometricField<Type, fvPatchField, volMesh>& fld,
     const GeometricField
@@ -39,6 +39,7 @@ void Foam::demCoupling::fluidSampler::sampleAtTop
         typename outerProduct<vector, Type>::type, fvPatchField, volMesh
     >& gradFld,
     const particleData& particles,
+    const scalar height,
     List<Type>& values
 ) const
 {
@@ -50,7 +51,7 @@ void Foam::demCoupling::fluidSampler::sampleAtTop
             return reconstructed
             (
                 fld, gradFld, particles.cell[i],
-                particles.position[i] + 0.5*particles.diameter[i]*up_
+                particles.position[i] + height*particles.diameter[i]*up_
             );
         }
     );

@@ -222,6 +222,66 @@ TEST(liftForces, MagnusIsRubinowKeller)
 }
 
 
+TEST(liftForces, WibergSmithIsHalfCLRhoAUTopSquaredMinusUBottomSquared)
+{
+    // A 10 mm grain at rest at a bed's surface, water 0.5 m/s over its top
+    // and 0.1 m/s under its bottom, C_L 0.2: F = 1/2 C_L rho pi d^2/4
+    // (0.5^2 - 0.1^2) up = 1.884955592154e-03 N (forceReference.py)
+    particleFluidState s(slipState(0.01, 1000, 1e-3, 0.5, 0));
+    s.up = vector(0, 0, 1);
+    s.UfTop = vector(0.5, 0, 0.2);      // vertical parts do not count
+    s.UfBottom = vector(0, 0.1, -0.3);
+    dictionary dict;
+    dictionary coeffs;
+    coeffs.add("liftCoefficient", 0.2);
+    dict.add("WibergSmithLiftCoeffs", coeffs);
+    autoPtr<forceModel> m(forceModel::New("WibergSmithLift", dict));
+    EXPECT_TRUE(m->needsTopAndBottomVelocity());
+    EXPECT_TRUE(m->reactsOnFluid());
+    const particleForce f(m->force(s));
+    EXPECT_EQ(f.K, 0);
+    EXPECT_NEAR(f.explicitForce.z()/1.884955592154e-03, 1, 1e-12);
+    EXPECT_NEAR(mag(f.explicitForce - vector(0, 0, f.explicitForce.z())), 0, 1e-20);
+
+    // The same flow over and under the grain (inside a bed, or a uniform
+    // stream): none
+    s.UfBottom = s.UfTop;
+    EXPECT_NEAR(mag(m->force(s).explicitForce), 0, 1e-20);
+
+    // A grain moving with the flow over its top: the slower flow under it
+    // pulls it down, 1/2 C_L rho A |u_B - v|^2
+    s.UfTop = vector(0.5, 0, 0);
+    s.UfBottom = vector(0.1, 0, 0);
+    s.Up = vector(0.5, 0, 0);
+    EXPECT_NEAR
+    (
+        m->force(s).explicitForce.z()/(-0.5*0.2*1000*pi/4*1e-4*0.16), 1,
+        1e-12
+    );
+
+    // The direction is against gravity, whatever it is
+    s.Up = Zero;
+    s.up = vector(0, -1, 0);
+    s.UfTop = vector(0.5, 0, 0);
+    s.UfBottom = vector(0.1, 0, 0);
+    EXPECT_NEAR(m->force(s).explicitForce.y()/(-1.884955592154e-03), 1, 1e-12);
+}
+
+
+TEST(liftForces, WibergSmithNeedsItsCoefficient)
+{
+    dictionary dict;
+    EXPECT_THROW(forceModel::New("WibergSmithLift", dict), Foam::error);
+    dictionary coeffs;
+    coeffs.add("liftCoefficient", -0.1);
+    dict.add("WibergSmithLiftCoeffs", coeffs);
+    EXPECT_THROW(forceModel::New("WibergSmithLift", dict), Foam::error);
+    dict.subDict("WibergSmithLiftCoeffs").set("liftCoefficient", 0.2);
+    dict.subDict("WibergSmithLiftCoeffs").add("liftCoeffcient", 0.2);
+    EXPECT_THROW(forceModel::New("WibergSmithLift", dict), Foam::error);
+}
+
+
 TEST(stressForces, PressureAndViscousForcesCancelInDevelopedChannelFlow)
 {
     // Fully developed Poiseuille flow: div(tau) = grad(p). The mean stress

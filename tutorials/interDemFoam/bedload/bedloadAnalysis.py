@@ -319,13 +319,17 @@ def chart(outPng, tables):
 def profile(run):
     """Share of the fluid force along x by the height of the grain centres,
     from the dumps post/grains.*.txt in the averaging window (columns id x
-    y z vx vy vz radius fx fz)."""
+    y z vx vy vz radius fx fz); and per grain of each layer its mean fluid
+    force along x and its vertical fluid force less its buoyancy (the lift,
+    with the vertical drag of the pores' flow), both over its submerged
+    weight (rho_s - rho) g V (the bed's 2650 and 1000 kg/m3)."""
     post = os.path.join(run, 'post')
     files = sorted((int(f.split('.')[1]), f) for f in os.listdir(post)
                    if f.startswith('grains.') and f.endswith('.txt'))
     flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
     T = flux[-1][0]
     bins = {}
+    lift = {}
     count = {}
     nUsed = 0
     zTop = []
@@ -340,26 +344,35 @@ def profile(run):
             continue
         for l in lines[i[0] + 1:]:
             w = l.split()
-            rows.append((float(w[3]), float(w[8])))
+            r = float(w[7])
+            V = 4.0/3.0*math.pi*r**3
+            weight = (2650.0 - 1000.0)*9.81*V
+            rows.append((float(w[3]), float(w[8]),
+                         float(w[8])/weight,
+                         (float(w[9]) - 1000.0*9.81*V)/weight))
         nUsed += 1
-        zs = sorted(z for z, fx in rows)
+        zs = sorted(row[0] for row in rows)
         zTop.append(mean(zs[-max(len(zs)//20, 1):]))
-        for z, fx in rows:
+        for z, fx, fxW, liftW in rows:
             b = int(z/0.005)
             bins[b] = bins.get(b, 0.0) + fx
+            lift[b] = lift.get(b, (0.0, 0.0))
+            lift[b] = (lift[b][0] + fxW, lift[b][1] + liftW)
             count[b] = count.get(b, 0) + 1
     if not nUsed:
         sys.exit('%s: no dumps with the fluid force in the window' % run)
     total = sum(bins.values())
     print('%s: %d dumps (t >= %.3g s); the 5 %% highest grain centres at '
           'z = %.4f m' % (run, nUsed, 0.5*T, mean(zTop)))
-    print('%-16s %-8s %-10s %s' % ('z of centres mm', 'grains', 'share Fx',
-                                  'cumulative from the top'))
+    print('%-16s %-8s %-10s %-12s %-8s %s' % (
+        'z of centres mm', 'grains', 'share Fx', 'cumulative', 'Fx/W',
+        '(Fz - buoyancy)/W'))
     cum = 0.0
     for b in sorted(bins, reverse=True):
         cum += bins[b]/total
-        print('%-16s %-8.1f %-10.3f %.3f' % (
-            '%g-%g' % (5*b, 5*b + 5), count[b]/nUsed, bins[b]/total, cum))
+        print('%-16s %-8.1f %-10.3f %-12.3f %-8.3f %.3f' % (
+            '%g-%g' % (5*b, 5*b + 5), count[b]/nUsed, bins[b]/total, cum,
+            lift[b][0]/count[b], lift[b][1]/count[b]))
 
 
 def flagship():

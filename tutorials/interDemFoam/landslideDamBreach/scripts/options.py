@@ -32,7 +32,7 @@ PIECE_LENGTH = '20'     # s, the pieces after the first
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
 VARIANTS = ('-width, -cellSize, -voidFraction, -forces, -fluidVelocity, '
-            '-fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
+            '-fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
             '-semiImplicitAlpha, -maxTime, -demStep')
 
 
@@ -78,7 +78,7 @@ def check_run_length(o, s):
 def is_variant(o):
     return any(o[k] for k in ('width', 'voidFraction', 'forces',
                               'fluidVelocity', 'fluctuation', 'eddyLifetime',
-                              'fluctuationSize', 'fluctuationAt',
+                              'fluctuationSize', 'fluctuationAt', 'lift',
                               'minVoidFraction', 'grading', 'maxTime',
                               'demStep')) \
         or o['cellSize'] != '0.05' or o['bed'] != 'rough' \
@@ -162,6 +162,13 @@ def check_coupling(o, s):
         if o['fluctuation'] != 'turbulence':
             raise OptionError("-%s %s: give -fluctuation turbulence "
                               "-turbulence kOmegaSST" % (key, needs))
+    if o['lift'] and not number(o['lift'], lambda c: 0 <= c <= 2):
+        raise OptionError("-lift takes the bed lift's coefficient C_L "
+                          "(WibergSmithLift), between 0 and 2 (Wiberg & "
+                          "Smith 1985: 0.2), got '%s'" % o['lift'])
+    if 'WibergSmithLift' in o['forces'].split() and not o['lift']:
+        raise OptionError("-forces with WibergSmithLift: give its "
+                          "coefficient with -lift C_L (e.g. -lift 0.2)")
     if o['voidFraction'] not in ('', 'virtualSphere', 'divided', 'centre'):
         raise OptionError("-voidFraction: unknown model '%s': use "
                           "virtualSphere, divided or centre" % o['voidFraction'])

@@ -27,6 +27,7 @@ fluctuation=""
 eddyLifetime=""
 fluctuationSize=""
 fluctuationAt=""
+lift=""
 turbulence=laminar
 minVoidFraction=""
 grading=""
@@ -59,6 +60,7 @@ parseOptions()
             -eddyLifetime) eddyLifetime="$2"; shift ;;
             -fluctuationSize) fluctuationSize="$2"; shift ;;
             -fluctuationAt) fluctuationAt="$2"; shift ;;
+            -lift)     lift="$2"; shift ;;
             -turbulence) turbulence="$2"; shift ;;
             -minVoidFraction) minVoidFraction="$2"; shift ;;
             -grading)  grading="$2"; shift ;;
@@ -74,7 +76,7 @@ parseOptions()
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
         esac
         shift
     done
@@ -98,6 +100,7 @@ checkOptions()
         forces="$forces" fluidVelocity="$fluidVelocity" \
         fluctuation="$fluctuation" eddyLifetime="$eddyLifetime" \
         fluctuationSize="$fluctuationSize" fluctuationAt="$fluctuationAt" \
+        lift="$lift" \
         turbulence="$turbulence" \
         minVoidFraction="$minVoidFraction" \
         grading="$grading" bed="$bed" maxTime="$maxTimeOption" \

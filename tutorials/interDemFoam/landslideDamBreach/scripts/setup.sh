@@ -194,6 +194,18 @@ then
 fi
 [ -n "$voidFraction" ] && foamDictionary -entry voidFraction -set "$voidFraction" "$dir"/constant/couplingProperties > /dev/null
 [ -n "$forces" ] && foamDictionary -entry forces -set "( $forces )" "$dir"/constant/couplingProperties > /dev/null
+if [ -n "$lift" ]
+then
+    # bed lift (WibergSmithLift) added to the forces unless -forces has it
+    local withLift="${forces:-DiFeliceDrag pressureGradient}"
+    case " $withLift " in
+        *" WibergSmithLift "*) ;;
+        *) withLift="$withLift WibergSmithLift" ;;
+    esac
+    foamDictionary -entry forces -set "( $withLift )" "$dir"/constant/couplingProperties > /dev/null || return 1
+    foamDictionary -entry WibergSmithLiftCoeffs -add "{ liftCoefficient $lift; }" \
+        "$dir"/constant/couplingProperties > /dev/null || return 1
+fi
 if [ -n "$fluidVelocity" ]
 then
     foamDictionary -entry fluidVelocity -add "$fluidVelocity" "$dir"/constant/couplingProperties > /dev/null || return 1
