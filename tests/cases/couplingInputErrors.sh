@@ -18,13 +18,15 @@
 #     explicit; demDrag implicit with that fix stops naming both
 #   - an error LIGGGHTS reports in a 2-rank run (Error::one, which calls
 #     MPI_Abort) ends with its message, the command and its script line
-#   - and the rest of docs/reliability.md's table of bad inputs (39 checks:
+#   - and the rest of docs/reliability.md's table of bad inputs (46 runs in
+#     all:
 #     'did you mean' for misspelt keywords, wrong types, ranges, missing
 #     sub-dictionaries, file coupling, a DEM box smaller than the mesh,
 #     restarts without demRestartScript or DEM state, a non-finite particle
 #     also on 2 ranks, bad fluidVelocity and velocityFluctuation values,
 #     eddyLifetime, size or sampledAt outside source turbulence or not a
-#     known word)
+#     known word, WibergSmithLift without liftCoefficient, out of range or
+#     without gravity)
 #     and its warnings (Rayleigh time, particles outside the mesh);
 #   - the output guard: 3000 identical LIGGGHTS lines run to the end, 12000
 #     are stopped.
@@ -181,6 +183,14 @@ expectError liftNoCoefficient "WibergSmithLift needs liftCoefficient" "WibergSmi
 sed -i 's/^forces .*/forces ( DiFeliceDrag WibergSmithLift );/' constant/couplingProperties
 echo "WibergSmithLiftCoeffs { liftCoefficient 3; }" >> constant/couplingProperties
 expectError liftCoefficientRange "liftCoefficient 3" "between 0 and 2" "WibergSmithLiftCoeffs"
+
+# a grain's top and bottom are found against gravity: none, no lift
+cp constant/g g.good
+sed -i 's/^value .*/value           (0 0 0);/' constant/g
+sed -i 's/^forces .*/forces ( DiFeliceDrag WibergSmithLift );/' constant/couplingProperties
+echo "WibergSmithLiftCoeffs { liftCoefficient 0.2; }" >> constant/couplingProperties
+expectError liftNoGravity "(WibergSmithLift)" "needs gravity" "constant/g"
+cp g.good constant/g
 
 # the DEM script and the mesh
 sed -i 's/^region .*/region          box block 0 0.02 0 0.02 0 0.1 units box/' DEM/in.liggghts

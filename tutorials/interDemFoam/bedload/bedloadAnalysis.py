@@ -322,7 +322,9 @@ def profile(run):
     y z vx vy vz radius fx fz); and per grain of each layer its mean fluid
     force along x and its vertical fluid force less its buoyancy (the lift,
     with the vertical drag of the pores' flow), both over its submerged
-    weight (rho_s - rho) g V (the bed's 2650 and 1000 kg/m3)."""
+    weight (rho_s - rho) g V (the bed's 2650 and 1000 kg/m3); last, that
+    vertical force averaged over the surface layer: the grains centred
+    within one mean diameter below the 5 % highest centres."""
     post = os.path.join(run, 'post')
     files = sorted((int(f.split('.')[1]), f) for f in os.listdir(post)
                    if f.startswith('grains.') and f.endswith('.txt'))
@@ -333,6 +335,7 @@ def profile(run):
     count = {}
     nUsed = 0
     zTop = []
+    surface = []
     for step, f in files:
         if step*1e-4 < 0.5*T - 1e-9:
             continue
@@ -353,6 +356,12 @@ def profile(run):
         nUsed += 1
         zs = sorted(row[0] for row in rows)
         zTop.append(mean(zs[-max(len(zs)//20, 1):]))
+        # the surface layer: centres within one mean diameter below the
+        # 5 % highest (the grains whose tops are in the flow)
+        dMean = 2.0*mean([float(l.split()[7]) for l in lines[i[0] + 1:]])
+        for z, fx, fxW, liftW in rows:
+            if zTop[-1] - dMean <= z <= zTop[-1]:
+                surface.append(liftW)
         for z, fx, fxW, liftW in rows:
             b = int(z/0.005)
             bins[b] = bins.get(b, 0.0) + fx
@@ -373,6 +382,9 @@ def profile(run):
         print('%-16s %-8.1f %-10.3f %-12.3f %-8.3f %.3f' % (
             '%g-%g' % (5*b, 5*b + 5), count[b]/nUsed, bins[b]/total, cum,
             lift[b][0]/count[b], lift[b][1]/count[b]))
+    print('surface layer (centres within one mean diameter below the 5 %% '
+          'highest): %d grain samples, (Fz - buoyancy)/W %.4f'
+          % (len(surface), mean(surface) if surface else float('nan')))
 
 
 def flagship():
