@@ -52,9 +52,15 @@
 #       relative velocities swap sizes and F must point to -z with the same
 #       magnitude; the +z check fails on it. Moving with the flow at its
 #       centre (v = G z_p): the top and the bottom see the same relative
-#       speed and F must vanish (below 1 % of the lagging value). Build
-#       control, run by hand: a library that samples the bottom at the top
-#       (height +d/2 for both) gives F = 0 and fails.
+#       speed and F must vanish (below 1 % of the lagging value). At rest
+#       in the uniform stream (10 mm/s) with fixed eddies (intensity 0.75,
+#       eddyTime 1e-4 s: u' of order 7.5 mm/s): the same eddy passes over
+#       the top and the bottom, so F must vanish (below 0.1 % of the
+#       lagging value, 1.6e-12 N); a grain whose eddy were added to its
+#       top alone would feel 1/2 C_L rho A (2 U u'_x + |u'_h|^2), of order
+#       1e-8 N. Build controls, run by hand: a library that samples the
+#       bottom at the top (height +d/2 for both) gives F = 0 and fails; one
+#       that adds the eddy to the top alone fails the uniform stream.
 #
 # Tolerance 2 % on the magnitude, and the other two components below 1 % of
 # it. The imposed flows are exact solutions that the mesh represents
@@ -71,6 +77,7 @@
 . "$(dirname "$0")/caseFunctions.sh"
 mode="${1:-saffman}"
 tolerance=0.02
+fluctuation=""   # velocityFluctuation entry of the next run (none: "")
 
 # run <name> <force model> <flow: couette | couetteReversed | uniform>
 # <DEM motion> [<particle's z> [<fluidVelocity>]]: the case
@@ -99,6 +106,11 @@ run()
     then
         foamDictionary -entry fluidVelocity -add "$sampling" constant/couplingProperties > /dev/null \
             || fail "$name: cannot set fluidVelocity $sampling"
+    fi
+    if [ -n "$fluctuation" ]
+    then
+        foamDictionary -entry velocityFluctuation -add "$fluctuation" constant/couplingProperties > /dev/null \
+            || fail "$name: cannot set velocityFluctuation"
     fi
     runApplication blockMesh > /dev/null || fail "$name: blockMesh"
     # 0/U: the imposed flow, cells in blockMesh order (x fastest, then y, z)
@@ -243,8 +255,22 @@ wibergSmith)
     check "Wiberg-Smith, grain moving with the flow at its centre" "$3" \
         "v < 0.01*$Fz && -v < 0.01*$Fz" \
         "grain moving with the flow at its centre: F_z = $3 N, not below 1 % of $Fz N"
+    # the same eddy over the top and the bottom: in a uniform stream the
+    # lift vanishes whatever the fluctuation (top-only: 1/2 C_L rho A
+    # (2 U u'_x + |u'_h|^2), of order 1e-8 N here)
+    fluctuation="{ intensity 0.75; eddyTime 1e-4; seed 3; }"
+    run wibergSmithEddies WibergSmithLift uniform "# held at rest (no integration)"; fe=$force
+    fluctuation=""
+    grep -q "velocity fluctuations seen by the particles" log.interDemFoam \
+        || fail "Wiberg-Smith in a uniform stream: the fluctuations are not on"
+    set -- $fe
+    requireNumber "Wiberg-Smith, uniform stream with eddies: Fz" "$3"
+    check "Wiberg-Smith, grain at rest in a uniform stream with eddies" "$3" \
+        "v < 0.001*$Fz && -v < 0.001*$Fz" \
+        "grain at rest in a uniform stream with eddies: F_z = $3 N, not below 0.1 % of $Fz N (the same eddy must pass over its top and bottom)"
     pass "Wiberg-Smith lift $f N against (0 0 $Fz) N;" \
-         "leading the flow: $fc N; moving with it: $f0 N"
+         "leading the flow: $fc N; moving with it: $f0 N;" \
+         "uniform stream with eddies: $fe N"
     ;;
 *)
     fail "unknown mode '$mode' (saffman | magnus | sampling | wibergSmith)"
