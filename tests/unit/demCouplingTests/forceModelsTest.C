@@ -226,7 +226,8 @@ TEST(liftForces, WibergSmithIsHalfCLRhoAUTopSquaredMinusUBottomSquared)
 {
     // A 10 mm grain at rest at a bed's surface, water 0.5 m/s over its top
     // and 0.1 m/s under its bottom, C_L 0.2: F = 1/2 C_L rho pi d^2/4
-    // (0.5^2 - 0.1^2) up = 1.884955592154e-03 N (forceReference.py)
+    // (0.5^2 - 0.1^2) up = 1.884955592154e-03 N (forceReference.py);
+    // slipState: d, rho, mu, eps 0.5 (a bed's surface), no flow at the centre
     particleFluidState s(slipState(0.01, 1000, 1e-3, 0.5, 0));
     s.up = vector(0, 0, 1);
     s.UfTop = vector(0.5, 0, 0.2);      // vertical parts do not count
