@@ -91,6 +91,18 @@ requireTransport()
         "$what: q* $half2 in the second half of the window, expected > 1e-3"
 }
 
+# requireStressCarried <run> <check's name> <message's head>: the grains
+# carry the imposed stress rho g S h within 10 % (a steady run); sets
+# ratio to the run's forceRatio
+requireStressCarried()
+{
+    local run=$1 what=$2 head=$3
+    ratio=$(value "$run" forceRatio)
+    check "$what: fluid force on the grains / imposed stress" "$ratio" \
+        'v > 0.9 && v < 1.1' \
+        "$head: the grains carry $ratio of rho g S h, expected 1 +- 0.1"
+}
+
 # controlRun <tag> <theta> <what is left out> <the check it guards>: a
 # control run of the small channel that must NOT transport in both halves
 # of the window; sets control1 and control2 to its halves' q*
@@ -185,12 +197,9 @@ grep -q "from the turbulence model's k and epsilon" turbulent.theta.$thetaHigh/l
     || fail "the turbulent run's grains do not see its fluctuations"
 qT=$(value turbulent.theta.$thetaHigh qstar)
 wp=$(value turbulent.theta.$thetaHigh qstarWongParker)
-tRatio=$(value turbulent.theta.$thetaHigh forceRatio)
 check "turbulent: q* against Wong-Parker" "$qT" "v > 0.5*$wp && v < 2*$wp" \
     "theta $thetaHigh, k-omega SST: q* $qT, expected within a factor of 2 of Wong-Parker's $wp"
-check "turbulent: fluid force on the grains / imposed stress" "$tRatio" \
-    'v > 0.9 && v < 1.1' \
-    "theta $thetaHigh, k-omega SST: the grains carry $tRatio of rho g S h, expected 1 +- 0.1"
+requireStressCarried turbulent.theta.$thetaHigh turbulent "theta $thetaHigh, k-omega SST"; tRatio=$ratio
 awk -v v="$qHigh" -v w="$wp" 'BEGIN { exit !(v > 0.5*w && v < 2*w) }' \
     && fail "negative control: the laminar q* $qHigh is within a factor of 2 of Wong-Parker's $wp too: the check cannot tell them apart"
 echo "ok: turbulent q* $qT within a factor of 2 of Wong-Parker $wp; laminar $qHigh is not"
@@ -225,11 +234,8 @@ fi
 requireTransport shearSize.theta.$thetaFluct "shearStress size, theta $thetaFluct"
 s1=$half1 s2=$half2
 qS=$(value shearSize.theta.$thetaFluct qstar)
-sRatio=$(value shearSize.theta.$thetaFluct forceRatio)
 qK=$(value kSize.theta.$thetaFluct qstar)
-check "shearStress size: fluid force on the grains / imposed stress" "$sRatio" \
-    'v > 0.9 && v < 1.1' \
-    "theta $thetaFluct, size shearStress: the grains carry $sRatio of rho g S h, expected 1 +- 0.1"
+requireStressCarried shearSize.theta.$thetaFluct "shearStress size" "theta $thetaFluct, size shearStress"; sRatio=$ratio
 requireNumber "k size: q*" "$qK"
 check "shearStress size: q* over the k-sized run's" "$qS" "v >= 2*$qK" \
     "theta $thetaFluct: q* $qS with size shearStress, $qK with size k: expected at least twice"
@@ -257,10 +263,7 @@ grep -q "fluidVelocity grainTop" grainTop.theta.$thetaFluct/log.interDemFoam \
 requireTransport grainTop.theta.$thetaFluct "grainTop, theta $thetaFluct"
 g1=$half1 g2=$half2
 qG=$(value grainTop.theta.$thetaFluct qstar)
-gRatio=$(value grainTop.theta.$thetaFluct forceRatio)
-check "grainTop: fluid force on the grains / imposed stress" "$gRatio" \
-    'v > 0.9 && v < 1.1' \
-    "theta $thetaFluct, fluidVelocity grainTop: the grains carry $gRatio of rho g S h, expected 1 +- 0.1"
+requireStressCarried grainTop.theta.$thetaFluct grainTop "theta $thetaFluct, fluidVelocity grainTop"; gRatio=$ratio
 check "grainTop: q* over the virtual-sphere average's" "$qG" "v >= 2*$qS" \
     "theta $thetaFluct: q* $qG with fluidVelocity grainTop, $qS with the average: expected at least twice"
 echo "ok: grainTop q* $qG (halves $g1, $g2, grains carry $gRatio of tau_b) against $qS with the average"
@@ -292,10 +295,7 @@ grep -q "Selecting force model WibergSmithLift" lift.theta.$thetaFluct/log.inter
 requireTransport lift.theta.$thetaFluct "lift, theta $thetaFluct"
 b1=$half1 b2=$half2
 qL=$(value lift.theta.$thetaFluct qstar)
-lRatio=$(value lift.theta.$thetaFluct forceRatio)
-check "lift: fluid force on the grains / imposed stress" "$lRatio" \
-    'v > 0.9 && v < 1.1' \
-    "theta $thetaFluct, WibergSmithLift: the grains carry $lRatio of rho g S h, expected 1 +- 0.1"
+requireStressCarried lift.theta.$thetaFluct lift "theta $thetaFluct, WibergSmithLift"; lRatio=$ratio
 check "lift: q* over the grainTop run's" "$qL" "v >= 2*$qG" \
     "theta $thetaFluct: q* $qL with WibergSmithLift, $qG without: expected at least twice"
 lUp=$(/usr/bin/python3 bedloadAnalysis.py profile lift.theta.$thetaFluct \
