@@ -338,8 +338,13 @@ Foam::demCoupling::fluidSampler::sample
                 states[i].UfTop = top[i];
                 states[i].UfBottom = bottom[i];
             }
+            if (velocity_ == velocitySource::grainTop)
+            {
+                // The top, sampled above from the same averages
+                Ui = top;
+            }
         }
-        if (velocity_ == velocitySource::grainTop)
+        else if (velocity_ == velocitySource::grainTop)
         {
             sampleAtHeight(U, tgradU(), particles, 0.5, Ui);
         }
