@@ -55,7 +55,11 @@
 #       least twice the q* of the grainTop run (measured 0.124 against
 #       0.0293), and the surface layer's vertical fluid force less buoyancy
 #       0.03-0.5 of its submerged weight (measured 0.060; grainTop 0.005)
-#   bedload.sh          all eleven runs (about 3 min on one core)
+#   a mobilised start (-mobilise "0.8 2", laminar), theta 0.2: the start
+#       moves the bed (q* > 0.1 over 1-2 s), the grains then carry theta
+#       0.2 within 10 %, and the bed stops (no sustained transport over
+#       5-8 s: the model's cessation threshold is its onset from rest)
+#   bedload.sh          all twelve runs (about 3 min on one core)
 # Measured (docs/erosion.md, Test): theta 0.2 q* 6.4e-5; theta 0.8 q* 0.547
 # (0.558, 0.536 in the two halves), the grains carrying 1.002 of rho g S h;
 # cellPoint 0.997; fluctuations 0.0135, 0.0083 and 1.0006; no fluid forces
@@ -305,8 +309,35 @@ check "lift: vertical fluid force less buoyancy on the surface layer / its weigh
     "theta $thetaFluct, WibergSmithLift: the surface layer's (Fz - buoyancy)/W is $lUp, expected 0.03-0.5"
 echo "ok: lift q* $qL (halves $b1, $b2, grains carry $lRatio of tau_b) against $qG without; surface layer (Fz - buoyancy)/W $lUp"
 
+# a mobilised start (Allrun -mobilise "0.8 2", laminar, theta 0.2): the bed
+# driven at theta 0.8 for 2 s, then at 0.2 for 6 s, averaged over 5-8 s.
+# The start moves the bed (q* > 0.1 over 1-2 s; measured 0.49), the forcing
+# then changes (the grains carry theta 0.2 within 10 %: measured 0.2006),
+# and the moving bed stops: no sustained transport at 0.2, below this
+# model's onset from rest (0.4-0.5), as in every mobilised sweep of
+# docs/erosion.md (the model's cessation threshold is its entrainment
+# threshold). Control, run by hand: an Allrun that keeps the start's
+# forcing gives thetaGrain 0.80 and q* 0.54 and fails both checks.
+./Allrun $laminar -size small -tag mobilised -mobilise "$thetaHigh 2" -theta "$thetaLow" \
+    -endTime $endTime > log.Allrun.mobilised 2>&1 \
+    || { tail -20 log.Allrun.mobilised; fail "Allrun -mobilise (log.Allrun.mobilised)"; }
+cat mobilised.theta.$thetaLow/log.bedloadAnalysis
+mob=mobilised.theta.$thetaLow
+check "mobilised: the window's start" "$(value $mob windowStart)" 'v == 5' \
+    "-mobilise \"$thetaHigh 2\", endTime $endTime: window from $(value $mob windowStart) s, expected 5 (the second half of the run at theta)"
+qStart=$(awk '!/^#/ && $1 >= 1 && $1 <= 2 { s += $2; n++ } END { if (n > 0) printf "%.6g", s/n/sqrt(1.65*9.81*1e-6) }' $mob/DEM/flux.dat)
+check "mobilised: q* of the start, 1-2 s" "$qStart" 'v > 0.1' \
+    "-mobilise: q* $qStart over 1-2 s at theta $thetaHigh, expected > 0.1 (the bed moving)"
+mobTheta=$(value $mob thetaGrain)
+check "mobilised: theta the grains carry / $thetaLow" "$mobTheta" "v > 0.9*$thetaLow && v < 1.1*$thetaLow" \
+    "-mobilise: the grains carry theta $mobTheta after the start, expected $thetaLow +- 10 % (the forcing changed)"
+qMob=$(value $mob qstar)
+check "mobilised: transport flag at theta $thetaLow" "$(value $mob transport)" 'v == 0' \
+    "-mobilise: sustained transport at theta $thetaLow after the start (q* $qMob), expected the bed to stop below the onset"
+echo "ok: mobilised start q* $qStart, then theta $mobTheta on the grains, q* $qMob"
+
 # Negative control: no fluid-particle force
 setEntry constant/couplingProperties forces "( )"
 controlRun noforce "$thetaHigh" "without fluid forces" "the transport check"
 c1=$control1 c2=$control2
-pass "turbulent theta $thetaHigh: q* $qT (Wong-Parker $wp, grains carry $tRatio of tau_b); laminar: theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); fluctuations sized by the shear stress at theta $thetaFluct: q* $qS (halves $s1, $s2), $qK sized by k; at the grains' tops q* $qG (halves $g1, $g2); with bed lift q* $qL (halves $b1, $b2); without fluid forces q* $c1, $c2: the transport check fails as it must"
+pass "turbulent theta $thetaHigh: q* $qT (Wong-Parker $wp, grains carry $tRatio of tau_b); laminar: theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); fluctuations sized by the shear stress at theta $thetaFluct: q* $qS (halves $s1, $s2), $qK sized by k; at the grains' tops q* $qG (halves $g1, $g2); with bed lift q* $qL (halves $b1, $b2); mobilised at $thetaHigh then $thetaLow: q* $qMob (start $qStart); without fluid forces q* $c1, $c2: the transport check fails as it must"

@@ -34,7 +34,9 @@ A run's records (Allrun, DEM/in.bedload, system/controlDict):
                          ones (N), mobile grains faster than 0.05 m/s
   postProcessing/flowVelocity/0/volFieldValue.dat
                          t, mean U and alpha of the forced water layer
-Averaging window: the second half of the run, [T/2, T]. Statistically
+Averaging window: the second half of the run, [T/2, T]; after a
+mobilised start (Allrun -mobilise: mobiliseTime t_m in caseSettings), the
+second half of the part at theta, [t_m + (T - t_m)/2, T]. Statistically
 steady when the water's mean velocity changes by less than 5 % across it
 and the fluid force on the grains is within 10 % of rho g S h lx ly.
 
@@ -99,6 +101,28 @@ def mean(v):
     return sum(v)/len(v) if v else float('nan')
 
 
+def window(s, T):
+    """The averaging window [t0, T] and the time splitting it in halves:
+    the second half of the run at theta (after mobiliseTime, if any)."""
+    tm = s.get('mobiliseTime', 0.0)
+    if not 0 <= tm < T:
+        sys.exit('mobiliseTime %g outside the run [0, %g]' % (tm, T))
+    return tm + 0.5*(T - tm), tm + 0.75*(T - tm)
+
+
+def flowVelocity(run):
+    """t, mean U and alpha of the forced water layer, from every start
+    time's postProcessing/flowVelocity/<t>/volFieldValue.dat (a restarted
+    run writes a folder per start)."""
+    base = os.path.join(run, 'postProcessing', 'flowVelocity')
+    rows = []
+    for t in sorted(os.listdir(base), key=float):
+        rows += [r for r in table(os.path.join(base, t,
+                                               'volFieldValue.dat'), 5)
+                 if not rows or r[0] > rows[-1][0]]
+    return rows
+
+
 def analyse(run):
     s = settings(run)
     area = s['lx']*s['ly']
@@ -106,10 +130,10 @@ def analyse(run):
     if len(flux) < 20:
         sys.exit('%s: DEM/flux.dat has %d rows' % (run, len(flux)))
     T = flux[-1][0]
-    t0 = 0.5*T
+    t0, tHalf = window(s, T)
     win = [r for r in flux if r[0] >= t0]
-    half1 = [r for r in win if r[0] < 0.75*T]
-    half2 = [r for r in win if r[0] >= 0.75*T]
+    half1 = [r for r in win if r[0] < tHalf]
+    half2 = [r for r in win if r[0] >= tHalf]
     qs = mean([r[1] for r in win])
     # standard error from 5 block means (the flux is correlated in time)
     nb = 5
@@ -121,8 +145,7 @@ def analyse(run):
     Fx = mean([r[2] for r in win])
     nMoving = mean([r[4] for r in win])
     tauB = s['forcing']*s['depth']
-    vel = table(os.path.join(run, 'postProcessing', 'flowVelocity', '0',
-                             'volFieldValue.dat'), 5)
+    vel = flowVelocity(run)
     uw = [r for r in vel if r[0] >= t0]
     U = mean([r[1] for r in uw])
     n = max(len(uw)//10, 1)
@@ -146,6 +169,8 @@ def analyse(run):
         'nMoving': nMoving,
         'windowStart': t0,
         'windowEnd': T,
+        'mobiliseTheta': s.get('mobiliseTheta', 0.0),
+        'mobiliseTime': s.get('mobiliseTime', 0.0),
     }
     out['steady'] = int(abs(out['Udrift']) < 0.05
                         and abs(out['forceRatio'] - 1) < 0.1)
@@ -159,7 +184,8 @@ def analyse(run):
 
 
 def readSummary(run):
-    out = {}
+    out = {'mobiliseTheta': 0.0, 'mobiliseTime': 0.0}  # runs from before
+    #                                                    the option: at rest
     with open(os.path.join(run, 'bedload.summary')) as f:
         for line in f:
             k, v = line.split()
@@ -190,7 +216,8 @@ def collect(outName, runs, plot=True):
     os.makedirs(os.path.dirname(outName) or '.', exist_ok=True)
     cols = ['theta', 'qstar', 'qstarErr', 'transport', 'qstarMPM',
             'qstarWongParker', 'thetaGrain', 'U', 'UoverUstar', 'Udrift',
-            'nMoving', 'steady', 'windowStart', 'windowEnd', 'wallTime']
+            'nMoving', 'steady', 'windowStart', 'windowEnd', 'wallTime',
+            'mobiliseTheta', 'mobiliseTime']
     with open(outName + '.dat', 'w') as f:
         f.write('# Bedload flux against the Shields number '
                 '(tutorials/interDemFoam/bedload, bedloadAnalysis.py)\n')
@@ -202,7 +229,9 @@ def collect(outName, runs, plot=True):
                 '((rho_s - rho) g d); U: mean water velocity (m/s); Udrift: its '
                 'relative change across the window; nMoving: mobile grains '
                 'faster than 0.05 m/s; steady: |Udrift| < 5 %% and thetaGrain '
-                'within 10 %% of theta; wallTime: s\n')
+                'within 10 %% of theta; wallTime: s; mobiliseTheta, '
+                'mobiliseTime: the bed first driven at that theta for that '
+                'time (s; Allrun -mobilise; 0: started at rest)\n')
         f.write('# onset theta_c (first theta from which every run '
                 'transports, steady): %s\n' % (('%g' % onset) if onset else 'none'))
         if unsteady:
@@ -330,6 +359,7 @@ def profile(run):
                    if f.startswith('grains.') and f.endswith('.txt'))
     flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
     T = flux[-1][0]
+    t0 = window(settings(run), T)[0]
     bins = {}
     lift = {}
     count = {}
@@ -337,7 +367,7 @@ def profile(run):
     zTop = []
     surface = []
     for step, f in files:
-        if step*1e-4 < 0.5*T - 1e-9:
+        if step*1e-4 < t0 - 1e-9:
             continue
         rows = []
         with open(os.path.join(post, f)) as fh:
@@ -372,7 +402,7 @@ def profile(run):
         sys.exit('%s: no dumps with the fluid force in the window' % run)
     total = sum(bins.values())
     print('%s: %d dumps (t >= %.3g s); the 5 %% highest grain centres at '
-          'z = %.4f m' % (run, nUsed, 0.5*T, mean(zTop)))
+          'z = %.4f m' % (run, nUsed, t0, mean(zTop)))
     print('%-16s %-8s %-10s %-12s %-8s %s' % (
         'z of centres mm', 'grains', 'share Fx', 'cumulative', 'Fx/W',
         '(Fz - buoyancy)/W'))
