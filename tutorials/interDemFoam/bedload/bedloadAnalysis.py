@@ -353,7 +353,9 @@ def profile(run):
     with the vertical drag of the pores' flow), both over its submerged
     weight (rho_s - rho) g V (the bed's 2650 and 1000 kg/m3); last, that
     vertical force averaged over the surface layer: the grains centred
-    within one mean diameter below the 5 % highest centres."""
+    within one mean diameter below the 5 % highest centres; then how F_x/W
+    spreads over that layer's grain samples (mean, median, 90th and 99th
+    percentile, coefficient of variation)."""
     post = os.path.join(run, 'post')
     files = sorted((int(f.split('.')[1]), f) for f in os.listdir(post)
                    if f.startswith('grains.') and f.endswith('.txt'))
@@ -366,6 +368,7 @@ def profile(run):
     nUsed = 0
     zTop = []
     surface = []
+    surfaceFx = []
     for step, f in files:
         if step*1e-4 < t0 - 1e-9:
             continue
@@ -392,6 +395,7 @@ def profile(run):
         for z, fx, fxW, liftW in rows:
             if zTop[-1] - dMean <= z <= zTop[-1]:
                 surface.append(liftW)
+                surfaceFx.append(fxW)
         for z, fx, fxW, liftW in rows:
             b = int(z/0.005)
             bins[b] = bins.get(b, 0.0) + fx
@@ -415,6 +419,15 @@ def profile(run):
     print('surface layer (centres within one mean diameter below the 5 %% '
           'highest): %d grain samples, (Fz - buoyancy)/W %.4f'
           % (len(surface), mean(surface) if surface else float('nan')))
+    if surfaceFx:
+        v = sorted(surfaceFx)
+        m = mean(v)
+        sd = math.sqrt(mean([(x - m)**2 for x in v]))
+        pick = lambda p: v[min(int(p*len(v)), len(v) - 1)]
+        print('surface layer Fx/W: mean %.3f, median %.3f, 90th percentile '
+              '%.3f, 99th %.3f, coefficient of variation %.2f'
+              % (m, pick(0.5), pick(0.9), pick(0.99), sd/m if m else
+                 float('nan')))
 
 
 def flagship():
