@@ -325,11 +325,12 @@ Foam::demCoupling::fluidSampler::sample
         {
             tgradU = fvc::grad(U);
         }
+        List<vector> top;
         if (needTopAndBottom_)
         {
             // At the top and the bottom of each grain, by its host
             // processor (a grain no processor hosts keeps the average)
-            List<vector> top(Ui);
+            top = Ui;
             List<vector> bottom(Ui);
             sampleAtHeight(U, tgradU(), particles, 0.5, top);
             sampleAtHeight(U, tgradU(), particles, -0.5, bottom);
@@ -338,15 +339,18 @@ Foam::demCoupling::fluidSampler::sample
                 states[i].UfTop = top[i];
                 states[i].UfBottom = bottom[i];
             }
-            if (velocity_ == velocitySource::grainTop)
+        }
+        if (velocity_ == velocitySource::grainTop)
+        {
+            if (needTopAndBottom_)
             {
                 // The top, sampled above from the same averages
                 Ui = top;
             }
-        }
-        else if (velocity_ == velocitySource::grainTop)
-        {
-            sampleAtHeight(U, tgradU(), particles, 0.5, Ui);
+            else
+            {
+                sampleAtHeight(U, tgradU(), particles, 0.5, Ui);
+            }
         }
         else if (velocity_ == velocitySource::cellPoint)
         {

@@ -32,7 +32,7 @@ A run's records (Allrun, DEM/in.bedload, system/controlDict):
   DEM/flux.dat           t, q_s (sum of V_p u_p,x over the mobile grains /
                          (lx ly), m2/s), F_x on all grains, on the mobile
                          ones (N), mobile grains faster than 0.05 m/s
-  postProcessing/flowVelocity/0/volFieldValue.dat
+  postProcessing/flowVelocity/<t>/volFieldValue.dat (one folder per start)
                          t, mean U and alpha of the forced water layer
 Averaging window: the second half of the run, [T/2, T]; after a
 mobilised start (Allrun -mobilise: mobiliseTime t_m in caseSettings), the
