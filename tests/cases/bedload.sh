@@ -63,7 +63,12 @@
 #       grains carry rho g S h within 3 % and q* differs from the same
 #       run with the average (a build that dropped cellPoint with the
 #       lift on repeated that run to every digit)
-#   bedload.sh          all fourteen runs (about 3.5 min on one core)
+#   the turbulence of the cell above each grain's host cell (sampledAt
+#       cellAbove) with the lift options, theta 0.1: transport in both
+#       halves, at least 5 times the q* of the same run sampled at the
+#       grains' tops (measured 4.1e-3 against 1.9e-4), which must not
+#       transport
+#   bedload.sh          all seventeen runs (about 5 min on one core)
 # Measured (docs/erosion.md, Test): theta 0.2 q* 6.4e-5; theta 0.8 q* 0.547
 # (0.558, 0.536 in the two halves), the grains carrying 1.002 of rho g S h;
 # cellPoint 0.997; fluctuations 0.0135, 0.0083 and 1.0006; no fluid forces
@@ -74,6 +79,7 @@
 thetaLow=0.2
 thetaHigh=0.8
 thetaFluct=0.3
+thetaAbove=0.1
 REF_QSTAR=0.5            # q* at theta 0.8, small channel: measured 0.570 +- 0.033 (0.502 with explicit DEM drag)
 endTime=6
 # the laminar channel of these checks (the tutorial's default is turbulent)
@@ -338,6 +344,52 @@ check "lift: vertical fluid force less buoyancy on the surface layer / its weigh
     "theta $thetaFluct, WibergSmithLift: the surface layer's (Fz - buoyancy)/W is $lUp, expected 0.03-0.5"
 echo "ok: lift q* $qL (halves $b1, $b2, grains carry $lRatio of tau_b) against $qG without; surface layer (Fz - buoyancy)/W $lUp"
 
+# The turbulence of the cell above each grain's host cell (velocityFluctuation
+# sampledAt cellAbove) with the lift options above (eddies sized by the
+# shear stress and living k/epsilon, the velocity at the grain's top, bed
+# lift C_L 0.2), theta 0.1, against the same channel with k, epsilon and the
+# stress taken at the grain's top (sampledAt grainTop, the tutorial's
+# tLift options). In the cell that holds the bed's surface the grains take
+# most of the momentum as drag, and its Reynolds stress is 0.2 u*^2; the
+# cell above carries 0.7 u*^2 (bedloadAnalysis.py nearBed on the tutorial's
+# tAbove.theta.0.1), so a surface grain meets eddies sqrt(3.5) = 1.9 times
+# stronger. The cellAbove run must transport in both halves of the window
+# (measured 4.8e-3 and 3.4e-3) and move at least 5 times the grainTop
+# run's q* (measured 4.1e-3 against 1.9e-4, 21 times; 17 times in the
+# tutorial's channel, 6.6e-3 against 3.8e-4); the grainTop run is the
+# control that must not transport (measured 3.0e-4 and 8.9e-5). Not
+# checked: the stress the grains carry (0.91-0.95 of rho g S h in 6 s at
+# this theta, the flow still accelerating; 1.002 in the tutorial's 20 s).
+# Control, run by hand: a build whose cellAbove takes the host cell's own
+# value (tests/README.md).
+for v in above topAt
+do
+    case $v in above) at=cellAbove ;; topAt) at=grainTop ;; esac
+    ./Allrun -size small -tag $v -eddyLifetime turnover -fluctuationSize shearStress \
+        -fluidVelocity grainTop -fluctuationAt $at -lift 0.2 -theta "$thetaAbove" -endTime $endTime \
+        > log.Allrun.$v 2>&1 \
+        || { tail -20 log.Allrun.$v; fail "Allrun -fluctuationAt $at (log.Allrun.$v)"; }
+    cat $v.theta.$thetaAbove/log.bedloadAnalysis
+done
+grep -q "(sampledAt cellAbove)" above.theta.$thetaAbove/log.interDemFoam \
+    || fail "the cellAbove run did not report sampledAt cellAbove"
+requireTransport above.theta.$thetaAbove "cellAbove, theta $thetaAbove"
+a1=$half1 a2=$half2
+qA=$(value above.theta.$thetaAbove qstar)
+qTopAt=$(value topAt.theta.$thetaAbove qstar)
+t1=$(value topAt.theta.$thetaAbove qstarHalf1)
+t2=$(value topAt.theta.$thetaAbove qstarHalf2)
+requireNumber "grainTop sampling: q* first half" "$t1"
+requireNumber "grainTop sampling: q* second half" "$t2"
+requireNumber "grainTop sampling: q*" "$qTopAt"
+if awk -v a="$t1" -v b="$t2" 'BEGIN { exit !(a > 1e-3 && b > 1e-3) }'
+then
+    fail "control: sampledAt grainTop at theta $thetaAbove transports too (q* $t1, $t2): the cellAbove check cannot tell them apart"
+fi
+check "cellAbove: q* over the grainTop-sampled run's" "$qA" "v >= 5*$qTopAt" \
+    "theta $thetaAbove: q* $qA with sampledAt cellAbove, $qTopAt with grainTop: expected at least 5 times"
+echo "ok: cellAbove q* $qA (halves $a1, $a2) against $qTopAt (halves $t1, $t2) sampled at the grains' tops"
+
 # a mobilised start (Allrun -mobilise "0.8 2", laminar, theta 0.2): the bed
 # driven at theta 0.8 for 2 s, then at 0.2 for 6 s, averaged over 5-8 s.
 # The start moves the bed (q* > 0.1 over 1-2 s; measured 0.49), the forcing
@@ -374,4 +426,4 @@ echo "ok: mobilised start q* $qStart, then theta $mobTheta on the grains, q* $qM
 setEntry constant/couplingProperties forces "( )"
 controlRun noforce "$thetaHigh" "without fluid forces" "the transport check"
 c1=$control1 c2=$control2
-pass "turbulent theta $thetaHigh: q* $qT (Wong-Parker $wp, grains carry $tRatio of tau_b); laminar: theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); fluctuations sized by the shear stress at theta $thetaFluct: q* $qS (halves $s1, $s2), $qK sized by k; at the grains' tops q* $qG (halves $g1, $g2); with bed lift q* $qL (halves $b1, $b2); mobilised at $thetaHigh then $thetaLow: q* $qMob (start $qStart); without fluid forces q* $c1, $c2: the transport check fails as it must"
+pass "turbulent theta $thetaHigh: q* $qT (Wong-Parker $wp, grains carry $tRatio of tau_b); laminar: theta $thetaLow: q* $qLow (none); theta $thetaHigh: q* $qHigh (halves $q1, $q2; reference $REF_QSTAR, MPM $mpm), grains carry $grainRatio of tau_b ($cpRatio with fluidVelocity cellPoint); with fluctuations theta $thetaFluct transports (q* $f1, $f2; grains carry $fRatio of tau_b; without them q* $l1, $l2); fluctuations sized by the shear stress at theta $thetaFluct: q* $qS (halves $s1, $s2), $qK sized by k; at the grains' tops q* $qG (halves $g1, $g2); with bed lift q* $qL (halves $b1, $b2); turbulence of the cell above at theta $thetaAbove q* $qA (halves $a1, $a2), $qTopAt at the tops; mobilised at $thetaHigh then $thetaLow: q* $qMob (start $qStart); without fluid forces q* $c1, $c2: the transport check fails as it must"

@@ -171,7 +171,7 @@ echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; size shearStress; }" >>
 expectError sizeWithFixed "Unknown keyword 'size'" "intensity, eddyTime and seed" "velocityFluctuation"
 
 echo "velocityFluctuation { source turbulence; sampledAt top; }" >> constant/couplingProperties
-expectError unknownSampledAt "sampledAt 'top'" "average" "grainTop" "velocityFluctuation"
+expectError unknownSampledAt "sampledAt 'top'" "average" "grainTop" "cellAbove" "velocityFluctuation"
 
 echo "velocityFluctuation { intensity 0.5; eddyTime 0.1; sampledAt grainTop; }" >> constant/couplingProperties
 expectError sampledAtWithFixed "Unknown keyword 'sampledAt'" "intensity, eddyTime and seed" "velocityFluctuation"

@@ -155,6 +155,14 @@ Foam::demCoupling::fluidSampler::fluidSampler
                     << " taken at each particle's top, d/2 above its centre"
                     << " (sampledAt grainTop)" << endl;
             }
+            if (fluctuation_->sampledAbove())
+            {
+                Info<< "    k, epsilon"
+                    << (fluctuation_->sizedByShearStress() ? " and the shear"
+                        " stress" : "")
+                    << " taken in the cell above each particle's host cell"
+                    << " (sampledAt cellAbove)" << endl;
+            }
             if (fluctuation_->sizedByShearStress())
             {
                 Info<< "    sized by the local Reynolds shear stress"
@@ -415,12 +423,19 @@ Foam::demCoupling::fluidSampler::sample
         }
         const bool turbulenceAtTop =
             fluctuation_.valid() && fluctuation_->sampledAtTop();
+        const bool turbulenceAbove =
+            fluctuation_.valid() && fluctuation_->sampledAbove();
         if (turbulenceFluctuations())
         {
             const tmp<volScalarField> tk(fluid.k());
             const tmp<volScalarField> tepsilon(fluid.epsilon());
             scalarList ki(vf.sample(tk()));
             scalarList epsiloni(vf.sample(tepsilon()));
+            if (turbulenceAbove)
+            {
+                sampleInCellAbove(tk(), particles, ki);
+                sampleInCellAbove(tepsilon(), particles, epsiloni);
+            }
             if (turbulenceAtTop)
             {
                 sampleAtHeight(tk(), fvc::grad(tk())(), particles, 0.5, ki);
@@ -446,6 +461,10 @@ Foam::demCoupling::fluidSampler::sample
                 fluid.nut()*sqrt(2.0)*mag(symm(tgradU()))
             );
             scalarList sheari(vf.sample(shear));
+            if (turbulenceAbove)
+            {
+                sampleInCellAbove(shear, particles, sheari);
+            }
             if (turbulenceAtTop)
             {
                 sampleAtHeight

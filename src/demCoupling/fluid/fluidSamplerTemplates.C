@@ -58,7 +58,89 @@ void Foam::demCoupling::fluidSampler::sampleAtHeight
 }
 
 
+template<class Type>
+void Foam::demCoupling::fluidSampler::sampleInCellAbove
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld,
+    const particleData& particles,
+    List<Type>& values
+) const
+{
+    const PtrList<Field<Type>> across(valuesAcrossCoupledPatches(fld));
+    sampleOnHost
+    (
+        particles, values,
+        [&](const label i)
+        {
+            return valueInCellAbove(fld, across, particles.cell[i], up_);
+        }
+    );
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class Type>
+Foam::PtrList<Foam::Field<Type>>
+Foam::demCoupling::fluidSampler::valuesAcrossCoupledPatches
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld
+)
+{
+    PtrList<Field<Type>> across(fld.boundaryField().size());
+    forAll(fld.boundaryField(), patchi)
+    {
+        const fvPatchField<Type>& fb = fld.boundaryField()[patchi];
+        if (fb.coupled())
+        {
+            across.set(patchi, fb.patchNeighbourField().ptr());
+        }
+    }
+    return across;
+}
+
+
+template<class Type>
+Type Foam::demCoupling::fluidSampler::valueInCellAbove
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld,
+    const PtrList<Field<Type>>& across,
+    const label celli,
+    const vector& up
+)
+{
+    const fvMesh& mesh = fld.mesh();
+    label upFace = -1;
+    scalar mostUp = -GREAT;
+    for (const label facei : mesh.cells()[celli])
+    {
+        vector n(mesh.faceAreas()[facei]);
+        if (mesh.faceOwner()[facei] != celli)
+        {
+            n = -n;
+        }
+        const scalar c = (n & up)/(mag(n) + VSMALL);
+        if (c > mostUp)
+        {
+            mostUp = c;
+            upFace = facei;
+        }
+    }
+    if (mesh.isInternalFace(upFace))
+    {
+        const label owner = mesh.faceOwner()[upFace];
+        return fld[owner == celli ? mesh.faceNeighbour()[upFace] : owner];
+    }
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const label patchi = patches.whichPatch(upFace);
+    if (across.set(patchi))
+    {
+        return across[patchi][upFace - patches[patchi].start()];
+    }
+    // A wall or an open boundary above: nothing arrives from beyond it
+    return fld[celli];
+}
+
 
 template<class Type>
 Type Foam::demCoupling::fluidSampler::reconstructed

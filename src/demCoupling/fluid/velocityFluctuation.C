@@ -71,6 +71,7 @@ Foam::demCoupling::velocityFluctuation::turbulenceSampleNames
 ({
     { turbulenceSample::average, "average" },
     { turbulenceSample::grainTop, "grainTop" },
+    { turbulenceSample::cellAbove, "cellAbove" },
 });
 
 const Foam::scalar
@@ -138,7 +139,9 @@ Foam::demCoupling::velocityFluctuation::velocityFluctuation
             coeffs, "sampledAt", turbulenceSampleNames,
             turbulenceSample::average,
             "average (the void-fraction average over the particle's cells;"
-            " the default) and grainTop (at its top, d/2 above its centre)"
+            " the default), grainTop (at its top, d/2 above its centre) and"
+            " cellAbove (in the cell above its host cell: the flow over a"
+            " bed's surface)"
         );
         seed_ = inputCheck::getOrDefault<label>
         (

@@ -14,7 +14,10 @@
 //   inside the bounds (0.725) and is kept;
 // - a linear scalar field (k, epsilon, the shear stress at the top:
 //   velocityFluctuation sampledAt grainTop) likewise, and a point beyond
-//   the upper neighbour is held at its value.
+//   the upper neighbour is held at its value;
+// - the value in the cell above a host cell (sampledAt cellAbove) is its
+//   upper face neighbour's for gravity along -z, tilted 17 degrees and
+//   along +x, and the cell's own under the top wall.
 
 #include <gtest/gtest.h>
 #include "testMain.H"
@@ -183,5 +186,59 @@ TEST(fluidSampler, TopScalarIsExactForALinearField)
     EXPECT_DOUBLE_EQ
     (
         fluidSampler::reconstructed(f, gradF, celli, far), f[above]
+    );
+}
+
+
+TEST(fluidSampler, CellAboveIsTheUpperFaceNeighbour)
+{
+    // k, epsilon and the shear stress in the cell above a grain's host
+    // cell (velocityFluctuation sampledAt cellAbove): the face neighbour
+    // across the face whose outward normal points most nearly up; the
+    // host cell itself under a wall. f = 2 + 50 x + 400 z + 7 y.
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    volScalarField f
+    (
+        IOobject("shear", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        calculatedFvPatchScalarField::typeName
+    );
+    forAll(f, celli)
+    {
+        const point& x = mesh.C()[celli];
+        f[celli] = 2 + 50*x.x() + 400*x.z() + 7*x.y();
+    }
+    const PtrList<scalarField> across
+    (
+        fluidSampler::valuesAcrossCoupledPatches(f)
+    );
+    const label celli = cellAt(mesh, 1, 3, 2);
+    // Gravity along -z, and tilted by 17 degrees (still the top face)
+    EXPECT_DOUBLE_EQ
+    (
+        fluidSampler::valueInCellAbove(f, across, celli, vector(0, 0, 1)),
+        f[cellAt(mesh, 1, 3, 3)]
+    );
+    EXPECT_DOUBLE_EQ
+    (
+        fluidSampler::valueInCellAbove
+        (
+            f, across, celli, vector(0.3, 0, 1)/mag(vector(0.3, 0, 1))
+        ),
+        f[cellAt(mesh, 1, 3, 3)]
+    );
+    // Gravity along +x: "above" is the neighbour at lower x
+    EXPECT_DOUBLE_EQ
+    (
+        fluidSampler::valueInCellAbove(f, across, celli, vector(-1, 0, 0)),
+        f[cellAt(mesh, 0, 3, 2)]
+    );
+    // The top layer, under the wall: its own value
+    const label top = cellAt(mesh, 1, 3, 4);
+    EXPECT_DOUBLE_EQ
+    (
+        fluidSampler::valueInCellAbove(f, across, top, vector(0, 0, 1)),
+        f[top]
     );
 }
