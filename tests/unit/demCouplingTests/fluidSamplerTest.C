@@ -17,7 +17,8 @@
 //   the upper neighbour is held at its value;
 // - the value in the cell above a host cell (sampledAt cellAbove) is its
 //   upper face neighbour's for gravity along -z, tilted 17 degrees and
-//   along +x, and the cell's own under the top wall.
+//   along +x, the cell's own under the top wall, and the value across the
+//   face where the patch above is coupled (marker values).
 
 #include <gtest/gtest.h>
 #include "testMain.H"
@@ -240,5 +241,30 @@ TEST(fluidSampler, CellAboveIsTheUpperFaceNeighbour)
     (
         fluidSampler::valueInCellAbove(f, across, top, vector(0, 0, 1)),
         f[top]
+    );
+
+    // Across a coupled patch (cyclic, processor) the neighbour's value:
+    // the top patch given marker values as if it were coupled
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    label topFace = -1;
+    for (const label facei : mesh.cells()[top])
+    {
+        if (!mesh.isInternalFace(facei) && mesh.faceAreas()[facei].z() > 0)
+        {
+            topFace = facei;
+        }
+    }
+    ASSERT_GE(topFace, 0);
+    const label topPatch = patches.whichPatch(topFace);
+    PtrList<scalarField> coupled(patches.size());
+    coupled.set(topPatch, new scalarField(patches[topPatch].size()));
+    forAll(coupled[topPatch], facei)
+    {
+        coupled[topPatch][facei] = 1000 + facei;
+    }
+    EXPECT_DOUBLE_EQ
+    (
+        fluidSampler::valueInCellAbove(f, coupled, top, vector(0, 0, 1)),
+        1000 + topFace - patches[topPatch].start()
     );
 }
