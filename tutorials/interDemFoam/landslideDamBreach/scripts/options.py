@@ -150,9 +150,9 @@ def check_coupling(o, s):
              "k (the default: the eddies' energy is k) or shearStress (the "
              "local Reynolds shear stress)",
              "sizes the eddies of the turbulence model"),
-            ('fluctuationAt', ('average', 'grainTop'),
-             "average (the default: over the grain's cells) or grainTop (at "
-             "its top)",
+            ('fluctuationAt', ('average', 'grainTop', 'cellAbove'),
+             "average (the default: over the grain's cells), grainTop (at "
+             "its top) or cellAbove (in the cell above its host cell)",
              "takes the turbulence model's k, epsilon and shear stress at "
              "the grain")):
         if not o[key]:
