@@ -31,28 +31,29 @@ using namespace Foam::demCoupling;
 namespace
 {
 
-// A vector field from its value at cell centres and boundary faces
-tmp<volVectorField> fieldOf
+// A field from its value at cell centres and boundary faces
+template<class Type>
+tmp<GeometricField<Type, fvPatchField, volMesh>> fieldOf
 (
     const fvMesh& mesh,
-    vector (*u)(const point&)
+    Type (*u)(const point&)
 )
 {
-    auto tU = tmp<volVectorField>::New
+    auto tU = tmp<GeometricField<Type, fvPatchField, volMesh>>::New
     (
-        IOobject("U", mesh.time().timeName(), mesh),
+        IOobject("f", mesh.time().timeName(), mesh),
         mesh,
-        dimensionedVector(dimVelocity, Zero),
-        calculatedFvPatchVectorField::typeName
+        dimensioned<Type>(dimless, Zero),
+        calculatedFvPatchField<Type>::typeName
     );
-    volVectorField& U = tU.ref();
+    GeometricField<Type, fvPatchField, volMesh>& U = tU.ref();
     forAll(U, celli)
     {
         U[celli] = u(mesh.C()[celli]);
     }
     forAll(U.boundaryField(), patchi)
     {
-        fvPatchVectorField& Ub = U.boundaryFieldRef()[patchi];
+        fvPatchField<Type>& Ub = U.boundaryFieldRef()[patchi];
         const vectorField& Cf = mesh.boundary()[patchi].Cf();
         forAll(Ub, facei)
         {
@@ -70,6 +71,16 @@ vector linearField(const point& x)
 vector stepField(const point& x)
 {
     return vector(x.z() > 0.004 ? 1 : 0, 0, 0);
+}
+
+scalar linearScalar(const point& x)
+{
+    return 2 + 50*x.x() + 400*x.z();
+}
+
+scalar linearScalarWithY(const point& x)
+{
+    return 2 + 50*x.x() + 400*x.z() + 7*x.y();
 }
 
 // The cell whose centre is (i, j, k) cells from the origin corner
@@ -153,33 +164,15 @@ TEST(fluidSampler, TopScalarIsExactForALinearField)
     // k, epsilon and the shear stress at a grain's top (velocityFluctuation
     // sampledAt grainTop) take the same reconstruction: f = 2 + 50 x + 400 z
     const fvMesh& mesh = testing_demCoupling::mesh();
-    volScalarField f
-    (
-        IOobject("k", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedScalar(dimless, Zero),
-        calculatedFvPatchScalarField::typeName
-    );
-    auto linear = [](const point& x) { return 2 + 50*x.x() + 400*x.z(); };
-    forAll(f, celli)
-    {
-        f[celli] = linear(mesh.C()[celli]);
-    }
-    forAll(f.boundaryField(), patchi)
-    {
-        fvPatchScalarField& fb = f.boundaryFieldRef()[patchi];
-        forAll(fb, facei)
-        {
-            fb[facei] = linear(mesh.boundary()[patchi].Cf()[facei]);
-        }
-    }
+    const tmp<volScalarField> tf(fieldOf(mesh, linearScalar));
+    const volScalarField& f = tf();
     const volVectorField gradF(fvc::grad(f));
     const label celli = cellAt(mesh, 1, 3, 2);
     const point p(mesh.C()[celli] + vector(0.0003, 0, 0.0015));
     // The field's range over the mesh is 4.5
     EXPECT_NEAR
     (
-        fluidSampler::reconstructed(f, gradF, celli, p), linear(p), 5e-12
+        fluidSampler::reconstructed(f, gradF, celli, p), linearScalar(p), 5e-12
     );
     // A point above the cell's neighbours' values is held at their largest
     const point far(mesh.C()[celli] + vector(0, 0, 0.006));
@@ -198,18 +191,8 @@ TEST(fluidSampler, CellAboveIsTheUpperFaceNeighbour)
     // across the face whose outward normal points most nearly up; the
     // host cell itself under a wall. f = 2 + 50 x + 400 z + 7 y.
     const fvMesh& mesh = testing_demCoupling::mesh();
-    volScalarField f
-    (
-        IOobject("shear", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedScalar(dimless, Zero),
-        calculatedFvPatchScalarField::typeName
-    );
-    forAll(f, celli)
-    {
-        const point& x = mesh.C()[celli];
-        f[celli] = 2 + 50*x.x() + 400*x.z() + 7*x.y();
-    }
+    const tmp<volScalarField> tf(fieldOf(mesh, linearScalarWithY));
+    const volScalarField& f = tf();
     const PtrList<scalarField> across
     (
         fluidSampler::valuesAcrossCoupledPatches(f)
