@@ -22,6 +22,16 @@
                                             see (k-omega runs): per cell
                                             layer, k, k/u*^2, the grains'
                                             fluctuation intensity and life
+  bedloadAnalysis.py mobile <run> ...       why the flux is what it is:
+                                            how many grains move and how
+                                            fast, against the fluid in the
+                                            bed's surface layer, Lajeunesse
+                                            et al.'s grain velocity and the
+                                            number of movers Wong-Parker
+                                            needs
+  bedloadAnalysis.py mobileChart <png> <label>=<run prefix> ...
+                                            the same against theta for
+                                            sweeps (runs <prefix>.theta.*)
   bedloadAnalysis.py onsetMap <out> <model>=<table.dat> ...
                                             the measured onsets checkDemScene
                                             reads (etc/sceneMaps/
@@ -530,6 +540,166 @@ def nearBed(run):
             mark))
 
 
+def layerVelocity(run, t0):
+    """Per cell layer the mean streamwise fluid velocity and fluid fraction,
+    averaged over the run's written times in the window (t >= t0)."""
+    st = settings(run)
+    nxy = int(st['nx'])*int(st['ny'])
+    times = [d for d in os.listdir(run) if re.fullmatch(r'[0-9.]+', d)
+             and float(d) >= t0 - 1e-9 and os.path.exists(
+                 os.path.join(run, d, 'U'))]
+    if not times:
+        sys.exit('%s: no written fields at t >= %g' % (run, t0))
+    u, e = None, None
+    for t in times:
+        U = internalField(os.path.join(run, t, 'U'), True)
+        eps = internalField(os.path.join(run, t, 'voidfraction'))
+        layers = len(eps)//nxy
+        uj = [mean([U[c][0] for c in range(j*nxy, (j + 1)*nxy)])
+              for j in range(layers)]
+        ej = [mean(eps[j*nxy:(j + 1)*nxy]) for j in range(layers)]
+        u = uj if u is None else [a + b for a, b in zip(u, uj)]
+        e = ej if e is None else [a + b for a, b in zip(e, ej)]
+    return [x/len(times) for x in u], [x/len(times) for x in e]
+
+
+def mobileRow(run):
+    """How many grains move and how fast, over a run's averaging window
+    (the grains faster than 0.05 m/s): theta, q*, n d^2 (their number per
+    bed area d^2, DEM/flux.dat every 5 ms), V_s (their mean streamwise
+    velocity, the dumps post/grains.*.txt), u* and the mean fluid velocity
+    u_surf of the cell layer holding the bed's surface (the lowest with
+    eps > 0.6, averaged over the fields written in the window). None
+    where no grain in the dumps is that fast."""
+    s = settings(run)
+    area = s['lx']*s['ly']
+    flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
+    if len(flux) < 20:
+        sys.exit('%s: DEM/flux.dat has %d rows' % (run, len(flux)))
+    T = flux[-1][0]
+    t0 = window(s, T)[0]
+    win = [r for r in flux if r[0] >= t0]
+    post = os.path.join(run, 'post')
+    vx = []
+    nDumps = 0
+    for f in os.listdir(post):
+        if not (f.startswith('grains.') and f.endswith('.txt')):
+            continue
+        if int(f.split('.')[1])*1e-4 < t0 - 1e-9:
+            continue
+        lines = open(os.path.join(post, f)).readlines()
+        i = [k for k, l in enumerate(lines) if l.startswith('ITEM: ATOMS')]
+        if i:
+            nDumps += 1
+            vx += [float(l.split()[4]) for l in lines[i[0] + 1:]
+                   if float(l.split()[4]) > 0.05]
+    if not nDumps:
+        sys.exit('%s: no grain dumps in the window t >= %g' % (run, t0))
+    if not vx:
+        return None
+    uLayer, eLayer = layerVelocity(run, t0)
+    surf = [j for j, e in enumerate(eLayer) if e > 0.6]
+    th = s['theta']
+    return {
+        'theta': th,
+        'qstar': mean([r[1] for r in win])/QREF,
+        'nd2': mean([r[4] for r in win])/area*D**2,
+        'Vs': mean(vx),
+        'ustar': math.sqrt(th*S1*G*D),
+        'uSurf': uLayer[surf[0]] if surf else float('nan'),
+    }
+
+
+def lajeunesse(theta):
+    """Lajeunesse, Malverti & Charru (2010, J. Geophys. Res. 115, F04001):
+    the mean velocity of the moving grains, V_s = 4.4 (u* - u*c), here with
+    theta_c 0.047 (m/s)."""
+    return 4.4*max(math.sqrt(theta*S1*G*D) - math.sqrt(0.047*S1*G*D), 0.0)
+
+
+def movingNeeded(theta, Vs):
+    """The moving grains per bed area d^2 a flux of Wong & Parker's size
+    needs at the speed Vs: q*_WP / ((pi/6) Vs / sqrt(R g d))."""
+    return (wongParker(theta)/(math.pi/6.0*Vs/math.sqrt(S1*G*D))
+            if Vs > 0 else float('nan'))
+
+
+def mobile(runs):
+    """Why the flux is what it is: q_s = (pi d^3/6) n V_s. Per run the
+    columns of mobileRow, V_s against Lajeunesse et al.'s, the share of
+    q_s the grains faster than 0.05 m/s carry ((pi d^3/6) n V_s / q_s),
+    and the n d^2 Wong & Parker's flux needs at the measured V_s and at
+    Lajeunesse et al.'s."""
+    print('%-26s %-5s %-9s %-6s %-7s %-7s %-6s %-7s %-7s %-7s %-7s %s' % (
+        'run', 'theta', 'q*', 'q*/WP', 'n d^2', 'Vs m/s', 'Vs/u*',
+        'u_surf', 'Vs_LMC', 'share', 'nWP@Vs', 'nWP@LMC'))
+    for run in runs:
+        r = mobileRow(run)
+        if r is None:
+            print('%-26s no grain faster than 0.05 m/s in the dumps' % run)
+            continue
+        th, wp = r['theta'], wongParker(r['theta'])
+        print('%-26s %-5g %-9.3g %-6.3f %-7.4f %-7.3f %-6.2f %-7.3f %-7.3f '
+              '%-7.2f %-7.3f %.3f' % (
+                  run, th, r['qstar'], r['qstar']/wp if wp else
+                  float('nan'), r['nd2'], r['Vs'], r['Vs']/r['ustar'],
+                  r['uSurf'], lajeunesse(th),
+                  r['nd2']*r['Vs']/math.sqrt(S1*G*D)*math.pi/6.0/r['qstar']
+                  if r['qstar'] else float('nan'),
+                  movingNeeded(th, r['Vs']),
+                  movingNeeded(th, lajeunesse(th))))
+
+
+def mobileChart(outPng, entries):
+    """The two parts of the flux against theta for several sweeps
+    (label=<run prefix>, runs <prefix>.theta.*): left, the moving grains
+    per bed area d^2 with the number Wong-Parker's flux needs at
+    Lajeunesse et al.'s speed; right, their speed over u*, with Lajeunesse
+    et al.'s and the mean fluid velocity of the bed's surface layer (open
+    symbols)."""
+    import glob
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, (axN, axV) = plt.subplots(1, 2, figsize=(11, 4.5))
+    th = [0.048 + 0.002*i for i in range(177)]
+    axN.plot(th, [movingNeeded(t, lajeunesse(t)) for t in th], 'k--',
+             label="Wong-Parker's flux at Lajeunesse et al.'s speed")
+    axV.plot(th, [lajeunesse(t)/math.sqrt(t*S1*G*D) for t in th], 'k--',
+             label='Lajeunesse et al. (2010): 4.4 (u* - u*c)')
+    markers = 'osD^vP'
+    for k, spec in enumerate(entries):
+        label, prefix = spec.rsplit('=', 1)
+        runs = sorted(glob.glob(prefix + '.theta.*'),
+                      key=lambda r: float(r.rsplit('.theta.', 1)[1]))
+        rows = [r for r in (mobileRow(run) for run in runs) if r]
+        if not rows:
+            sys.exit('mobileChart: no moving grains in %s.theta.*' % prefix)
+        m = markers[k % len(markers)]
+        t = [r['theta'] for r in rows]
+        line, = axN.plot(t, [r['nd2'] for r in rows], m + '-', label=label)
+        c = line.get_color()
+        axV.plot(t, [r['Vs']/r['ustar'] for r in rows], m + '-', color=c,
+                 label=label + ': grains')
+        axV.plot(t, [r['uSurf']/r['ustar'] for r in rows], m + ':',
+                 mfc='none', color=c, label=label + ': fluid, surface layer')
+    axN.set_yscale('log')
+    axN.set_xlabel(r'Shields number $\theta$')
+    axN.set_ylabel(r'moving grains per bed area, $n d^2$')
+    axN.set_title('How many grains move (faster than 0.05 m/s)')
+    axV.set_xlabel(r'Shields number $\theta$')
+    axV.set_ylabel(r'mean velocity / $u_*$')
+    axV.set_title('How fast they move')
+    axV.set_ylim(0, 4)
+    for ax in (axN, axV):
+        ax.set_xlim(0, 0.42)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(outPng, dpi=120)
+    print('wrote %s' % outPng)
+
+
 def onsetMap(outPath, entries):
     """The measured onsets for checkDemScene (etc/sceneMaps): per model the
     last Shields number of a sweep without sustained transport and the
@@ -588,6 +758,10 @@ if __name__ == '__main__':
         collect(args[1], args[2:], plot)
     elif len(args) == 2 and args[0] == 'nearBed':
         nearBed(args[1])
+    elif len(args) >= 3 and args[0] == 'mobileChart':
+        mobileChart(args[1], args[2:])
+    elif len(args) >= 2 and args[0] == 'mobile':
+        mobile(args[1:])
     elif len(args) >= 3 and args[0] == 'onsetMap':
         onsetMap(args[1], args[2:])
     else:
