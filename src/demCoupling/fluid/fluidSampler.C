@@ -147,21 +147,19 @@ Foam::demCoupling::fluidSampler::fluidSampler
                        fluctuation_->eddyLifetime()
                    )
                 << ")" << endl;
-            if (fluctuation_->sampledAtTop())
+            if (fluctuation_->sampledAtTop() || fluctuation_->sampledAbove())
             {
                 Info<< "    k, epsilon"
                     << (fluctuation_->sizedByShearStress() ? " and the shear"
                         " stress" : "")
-                    << " taken at each particle's top, d/2 above its centre"
-                    << " (sampledAt grainTop)" << endl;
-            }
-            if (fluctuation_->sampledAbove())
-            {
-                Info<< "    k, epsilon"
-                    << (fluctuation_->sizedByShearStress() ? " and the shear"
-                        " stress" : "")
-                    << " taken in the cell above each particle's host cell"
-                    << " (sampledAt cellAbove)" << endl;
+                    << (
+                           fluctuation_->sampledAtTop()
+                         ? " taken at each particle's top, d/2 above its"
+                           " centre (sampledAt grainTop)"
+                         : " taken in the cell above each particle's host"
+                           " cell (sampledAt cellAbove)"
+                       )
+                    << endl;
             }
             if (fluctuation_->sizedByShearStress())
             {
