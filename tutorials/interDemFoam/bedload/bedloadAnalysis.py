@@ -133,15 +133,45 @@ def flowVelocity(run):
     return rows
 
 
-def analyse(run):
+def fluxWindow(run):
+    """A run's settings, its DEM/flux.dat rows (at least 20), the end of
+    the run T, the averaging window's start t0 and middle tHalf, and the
+    rows in the window."""
     s = settings(run)
-    area = s['lx']*s['ly']
     flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
     if len(flux) < 20:
         sys.exit('%s: DEM/flux.dat has %d rows' % (run, len(flux)))
     T = flux[-1][0]
     t0, tHalf = window(s, T)
-    win = [r for r in flux if r[0] >= t0]
+    return s, flux, T, t0, tHalf, [r for r in flux if r[0] >= t0]
+
+
+def windowDumps(run, t0):
+    """The grain dumps post/grains.<step>.txt from t0 on (in step order):
+    per dump, its 'ITEM: ATOMS' header's words and its atom lines' words;
+    dumps without that header are left out."""
+    post = os.path.join(run, 'post')
+    files = sorted((int(f.split('.')[1]), f) for f in os.listdir(post)
+                   if f.startswith('grains.') and f.endswith('.txt'))
+    for step, f in files:
+        if step*1e-4 < t0 - 1e-9:
+            continue
+        with open(os.path.join(post, f)) as fh:
+            lines = fh.readlines()
+        i = [k for k, l in enumerate(lines) if l.startswith('ITEM: ATOMS')]
+        if i:
+            yield lines[i[0]].split(), [l.split() for l in lines[i[0] + 1:]]
+
+
+def layerMeans(values, nxy):
+    """Per horizontal cell layer (nxy cells each, in the blockMesh order of
+    the channel) the mean of a cell list."""
+    return [mean(values[j*nxy:(j + 1)*nxy]) for j in range(len(values)//nxy)]
+
+
+def analyse(run):
+    s, flux, T, t0, tHalf, win = fluxWindow(run)
+    area = s['lx']*s['ly']
     half1 = [r for r in win if r[0] < tHalf]
     half2 = [r for r in win if r[0] >= tHalf]
     qs = mean([r[1] for r in win])
@@ -366,12 +396,7 @@ def profile(run):
     within one mean diameter below the 5 % highest centres; then how F_x/W
     spreads over that layer's grain samples (mean, median, 90th and 99th
     percentile, coefficient of variation)."""
-    post = os.path.join(run, 'post')
-    files = sorted((int(f.split('.')[1]), f) for f in os.listdir(post)
-                   if f.startswith('grains.') and f.endswith('.txt'))
-    flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
-    T = flux[-1][0]
-    t0 = window(settings(run), T)[0]
+    t0 = fluxWindow(run)[3]
     bins = {}
     lift = {}
     count = {}
@@ -379,17 +404,11 @@ def profile(run):
     zTop = []
     surface = []
     surfaceFx = []
-    for step, f in files:
-        if step*1e-4 < t0 - 1e-9:
+    for header, atoms in windowDumps(run, t0):
+        if len(header) < 12:
             continue
         rows = []
-        with open(os.path.join(post, f)) as fh:
-            lines = fh.readlines()
-        i = [k for k, l in enumerate(lines) if l.startswith('ITEM: ATOMS')]
-        if not i or len(lines[i[0]].split()) < 12:
-            continue
-        for l in lines[i[0] + 1:]:
-            w = l.split()
+        for w in atoms:
             r = float(w[7])
             V = 4.0/3.0*math.pi*r**3
             weight = (2650.0 - 1000.0)*9.81*V
@@ -401,7 +420,7 @@ def profile(run):
         zTop.append(mean(zs[-max(len(zs)//20, 1):]))
         # the surface layer: centres within one mean diameter below the
         # 5 % highest (the grains whose tops are in the flow)
-        dMean = 2.0*mean([float(l.split()[7]) for l in lines[i[0] + 1:]])
+        dMean = 2.0*mean([float(w[7]) for w in atoms])
         for z, fx, fxW, liftW in rows:
             if zTop[-1] - dMean <= z <= zTop[-1]:
                 surface.append(liftW)
@@ -512,8 +531,7 @@ def nearBed(run):
         'R/u*^2', 'sigmaR/u', ''))
     surface = None
     layers = len(k)//(nx*ny)
-    uLayer = [mean([U[c][0] for c in range(j*nx*ny, (j + 1)*nx*ny)])
-              for j in range(layers)]
+    uLayer = layerMeans([v[0] for v in U], nx*ny)
     for j in range(layers):
         cells = range(j*nx*ny, (j + 1)*nx*ny)
         e = mean([eps[c] for c in cells])
@@ -554,10 +572,8 @@ def layerVelocity(run, t0):
     for t in times:
         U = internalField(os.path.join(run, t, 'U'), True)
         eps = internalField(os.path.join(run, t, 'voidfraction'))
-        layers = len(eps)//nxy
-        uj = [mean([U[c][0] for c in range(j*nxy, (j + 1)*nxy)])
-              for j in range(layers)]
-        ej = [mean(eps[j*nxy:(j + 1)*nxy]) for j in range(layers)]
+        uj = layerMeans([v[0] for v in U], nxy)
+        ej = layerMeans(eps, nxy)
         u = uj if u is None else [a + b for a, b in zip(u, uj)]
         e = ej if e is None else [a + b for a, b in zip(e, ej)]
     return [x/len(times) for x in u], [x/len(times) for x in e]
@@ -571,28 +587,13 @@ def mobileRow(run):
     u_surf of the cell layer holding the bed's surface (the lowest with
     eps > 0.6, averaged over the fields written in the window). None
     where no grain in the dumps is that fast."""
-    s = settings(run)
+    s, flux, T, t0, tHalf, win = fluxWindow(run)
     area = s['lx']*s['ly']
-    flux = table(os.path.join(run, 'DEM', 'flux.dat'), 5)
-    if len(flux) < 20:
-        sys.exit('%s: DEM/flux.dat has %d rows' % (run, len(flux)))
-    T = flux[-1][0]
-    t0 = window(s, T)[0]
-    win = [r for r in flux if r[0] >= t0]
-    post = os.path.join(run, 'post')
     vx = []
     nDumps = 0
-    for f in os.listdir(post):
-        if not (f.startswith('grains.') and f.endswith('.txt')):
-            continue
-        if int(f.split('.')[1])*1e-4 < t0 - 1e-9:
-            continue
-        lines = open(os.path.join(post, f)).readlines()
-        i = [k for k, l in enumerate(lines) if l.startswith('ITEM: ATOMS')]
-        if i:
-            nDumps += 1
-            vx += [float(l.split()[4]) for l in lines[i[0] + 1:]
-                   if float(l.split()[4]) > 0.05]
+    for header, atoms in windowDumps(run, t0):
+        nDumps += 1
+        vx += [float(w[4]) for w in atoms if float(w[4]) > 0.05]
     if not nDumps:
         sys.exit('%s: no grain dumps in the window t >= %g' % (run, t0))
     if not vx:
