@@ -14,6 +14,7 @@ Foam::demCoupling::fluidSampler::velocitySourceNames
     { velocitySource::voidFractionAverage, "voidFractionAverage" },
     { velocitySource::cellPoint, "cellPoint" },
     { velocitySource::grainTop, "grainTop" },
+    { velocitySource::bedSurfaceLogLaw, "bedSurfaceLogLaw" },
 });
 
 namespace
@@ -22,7 +23,7 @@ namespace
 // The keywords of couplingProperties the sampler reads
 const Foam::demCoupling::couplingKeywords::declare keywords
 (
-    {"fluidVelocity", "velocityFluctuation"}
+    {"fluidVelocity", "velocityFluctuation", "bedSurfaceLogLawCoeffs"}
 );
 
 // Writes scalars and vectors one after the other into a buffer slot, or
@@ -61,6 +62,7 @@ Foam::demCoupling::fluidSampler::fluidSampler
 )
 :
     velocity_(velocitySource::voidFractionAverage),
+    logLaw_(),
     fluctuation_(),
     up_(0, 0, 1),
     dictName_(dict.name()),
@@ -84,7 +86,9 @@ Foam::demCoupling::fluidSampler::fluidSampler
         " over the particle's cells; the default), cellPoint"
         " (interpolated at the particle's centre in its host cell) and"
         " grainTop (reconstructed at the particle's top, d/2 above its"
-        " centre against gravity)"
+        " centre against gravity) and bedSurfaceLogLaw (the rough-bed log"
+        " law in the cell that holds the bed's surface, over the"
+        " particle's exposed part; bedSurfaceLogLawCoeffs)"
     );
     if (velocity_ == velocitySource::cellPoint)
     {
@@ -98,8 +102,29 @@ Foam::demCoupling::fluidSampler::fluidSampler
             << " cell and bounded by its neighbours (fluidVelocity grainTop)"
             << endl;
     }
+    if (velocity_ == velocitySource::bedSurfaceLogLaw)
+    {
+        logLaw_.reset(new bedSurfaceLogLaw(dict));
+        Info<< "Fluid velocity at each particle: the rough-bed log law in"
+            << " its host cell (k_s " << logLaw_->roughness() << " d), over"
+            << " the bed's zero plane (the solids of the host cell and the"
+            << " cell below packed at solid fraction "
+            << logLaw_->bedSolidFraction() << "), anchored to the velocity"
+            << " of the cell above, averaged over the particle's exposed"
+            << " part (fluidVelocity bedSurfaceLogLaw, Wiberg & Smith 1987)"
+            << endl;
+    }
+    else if (dict.found("bedSurfaceLogLawCoeffs"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "bedSurfaceLogLawCoeffs in " << dict.name() << " is read only"
+            << " with fluidVelocity bedSurfaceLogLaw (this run's is "
+            << velocitySourceNames[velocity_] << "): remove it, or set"
+            << " fluidVelocity bedSurfaceLogLaw" << exit(FatalIOError);
+    }
     const bool needUp =
         velocity_ == velocitySource::grainTop
+     || velocity_ == velocitySource::bedSurfaceLogLaw
      || needTopAndBottom_
      || dict.found("velocityFluctuation");
     if (needUp)
@@ -110,8 +135,10 @@ Foam::demCoupling::fluidSampler::fluidSampler
         {
             FatalIOErrorInFunction(dict)
                 << (
-                       velocity_ == velocitySource::grainTop
-                     ? "fluidVelocity grainTop"
+                       velocity_ != velocitySource::voidFractionAverage
+                     && velocity_ != velocitySource::cellPoint
+                     ? "fluidVelocity "
+                     + velocitySourceNames[velocity_]
                      : needTopAndBottom_
                      ? "A force model that takes the velocity at a grain's"
                        " top and bottom (WibergSmithLift)"
@@ -282,6 +309,46 @@ void Foam::demCoupling::fluidSampler::unpack
 }
 
 
+void Foam::demCoupling::fluidSampler::sampleBedSurfaceLogLaw
+(
+    const volVectorField& U,
+    const volScalarField& voidfraction,
+    const particleData& particles,
+    List<vector>& values
+) const
+{
+    const fvMesh& mesh = U.mesh();
+    const PtrList<Field<vector>> acrossU(valuesAcrossCoupledPatches(U));
+    const PtrList<Field<scalar>> acrossEps
+    (
+        valuesAcrossCoupledPatches(voidfraction)
+    );
+    sampleOnHost
+    (
+        particles, values,
+        [&](const label i)
+        {
+            const label celli = particles.cell[i];
+            scalar zLow, zHigh;
+            bedSurfaceLogLaw::verticalExtent(mesh, celli, up_, zLow, zHigh);
+            const scalar epsBelow =
+                valueInCellAbove(voidfraction, acrossEps, celli, -up_);
+            return logLaw_->velocity
+            (
+                particles.position[i] & up_,
+                particles.diameter[i],
+                zLow,
+                zHigh,
+                1 - voidfraction[celli],
+                1 - epsBelow,
+                valueInCellAbove(U, acrossU, celli, up_),
+                U[celli]
+            );
+        }
+    );
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::List<Foam::demCoupling::particleFluidState>
@@ -357,6 +424,10 @@ Foam::demCoupling::fluidSampler::sample
             {
                 sampleAtHeight(U, tgradU(), particles, 0.5, Ui);
             }
+        }
+        else if (velocity_ == velocitySource::bedSurfaceLogLaw)
+        {
+            sampleBedSurfaceLogLaw(U, voidfraction, particles, Ui);
         }
         else if (velocity_ == velocitySource::cellPoint)
         {

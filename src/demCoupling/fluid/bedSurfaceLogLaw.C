@@ -1,0 +1,151 @@
+// interDemFoam: CFD-DEM coupling of OpenFOAM and LIGGGHTS
+// Copyright (C) 2026 the interDemFoam authors
+// SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
+#include "bedSurfaceLogLaw.H"
+#include "inputCheck.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCoupling::bedSurfaceLogLaw::bedSurfaceLogLaw
+(
+    const dictionary& couplingDict
+)
+:
+    roughness_(0),
+    bedSolidFraction_(0)
+{
+    if (!couplingDict.isDict("bedSurfaceLogLawCoeffs"))
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "fluidVelocity bedSurfaceLogLaw in " << couplingDict.name()
+            << " needs the sub-dictionary bedSurfaceLogLawCoeffs with"
+            << " roughness (k_s/d, the bed's Nikuradse roughness over the"
+            << " grain diameter, > 0: 2.9 measured over a bed of spheres by"
+            << " tests/cases/turbulentBed) and bedSolidFraction (1 - eps in"
+            << " the packed bed as the void-fraction field shows it, between"
+            << " 0 and 1)" << exit(FatalIOError);
+    }
+    const dictionary& coeffs = inputCheck::subDict
+    (
+        couplingDict, "bedSurfaceLogLawCoeffs",
+        {"roughness", "bedSolidFraction"}
+    );
+    roughness_ = inputCheck::get<scalar>
+    (
+        coeffs, "roughness", &inputCheck::positive, "> 0 (k_s/d)"
+    );
+    bedSolidFraction_ = inputCheck::get<scalar>
+    (
+        coeffs, "bedSolidFraction",
+        [](const scalar v) { return v > 0 && v < 1; },
+        "between 0 and 1 (1 - eps in the packed bed)"
+    );
+}
+
+
+Foam::demCoupling::bedSurfaceLogLaw::bedSurfaceLogLaw
+(
+    const scalar roughness,
+    const scalar bedSolidFraction
+)
+:
+    roughness_(roughness),
+    bedSolidFraction_(bedSolidFraction)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demCoupling::bedSurfaceLogLaw::verticalExtent
+(
+    const fvMesh& mesh,
+    const label celli,
+    const vector& up,
+    scalar& zLow,
+    scalar& zHigh
+)
+{
+    zLow = GREAT;
+    zHigh = -GREAT;
+    for (const label pointi : mesh.cellPoints()[celli])
+    {
+        const scalar z = mesh.points()[pointi] & up;
+        zLow = min(zLow, z);
+        zHigh = max(zHigh, z);
+    }
+}
+
+
+Foam::scalar Foam::demCoupling::bedSurfaceLogLaw::zeroPlane
+(
+    const scalar zLow,
+    const scalar zHigh,
+    const scalar solidHost,
+    const scalar solidBelow
+) const
+{
+    const scalar dz = zHigh - zLow;
+    const scalar filledBelow = min(max(solidBelow, 0)/bedSolidFraction_, 1);
+    const scalar filledHost = min(max(solidHost, 0)/bedSolidFraction_, 1);
+    return zLow - dz + (filledBelow + filledHost)*dz;
+}
+
+
+Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
+(
+    const scalar zCentre,
+    const scalar d,
+    const scalar zLow,
+    const scalar zHigh,
+    const scalar solidHost,
+    const scalar solidBelow,
+    const vector& Uabove,
+    const vector& Uhost
+) const
+{
+    const scalar r = 0.5*d;
+    const scalar zE = zeroPlane(zLow, zHigh, solidHost, solidBelow);
+    const scalar z0 = roughness_*d/30;
+    const scalar zAbove = zHigh + 0.5*(zHigh - zLow);
+    const scalar magUabove = mag(Uabove);
+
+    // Wholly sheltered, or no profile to anchor (the cell above still in
+    // the bed's roughness, or no flow above)
+    if
+    (
+        zCentre + r <= zE || zAbove - zE <= 2*z0 || magUabove < VSMALL
+    )
+    {
+        return Uhost;
+    }
+
+    // The exposed part of the cross-section: z = zCentre - r cos(phi),
+    // phi from phiLow (the zero plane, or the grain's bottom) to pi; the
+    // width there is 2 r sin(phi) and dz = r sin(phi) dphi
+    const scalar cosLow = min(max((zCentre - zE)/r, -1), 1);
+    const scalar phiLow = Foam::acos(cosLow);
+    const scalar logAbove = Foam::log((zAbove - zE)/z0);
+    const scalar dphi = (constant::mathematical::pi - phiLow)/nQuadrature;
+    scalar u2Area = 0;
+    for (label i = 0; i < nQuadrature; ++i)
+    {
+        const scalar phi = phiLow + (i + 0.5)*dphi;
+        const scalar height = zCentre - r*Foam::cos(phi) - zE;
+        const scalar u =
+            height > z0 ? magUabove*Foam::log(height/z0)/logAbove : 0;
+        const scalar s = Foam::sin(phi);
+        u2Area += sqr(u)*2*sqr(r)*sqr(s)*dphi;
+    }
+    const scalar area = constant::mathematical::pi*sqr(r);
+    // int_phiLow^pi 2 r^2 sin^2 = r^2 (pi - phiLow + sin cos at phiLow)
+    const scalar exposedArea =
+        sqr(r)
+       *(
+            constant::mathematical::pi - phiLow
+          + Foam::sin(phiLow)*Foam::cos(phiLow)
+        );
+    return
+        Foam::sqrt(u2Area/area)*(Uabove/magUabove)
+      + max(1 - exposedArea/area, 0)*Uhost;
+}
