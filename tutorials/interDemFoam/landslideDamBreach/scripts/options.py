@@ -31,7 +31,7 @@ PIECE_LENGTH = '20'     # s, the pieces after the first
 # all eight: the long F runs early, so that two cores stay busy to the end
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
-VARIANTS = ('-width, -cellSize, -voidFraction, -forces, -fluidVelocity, '
+VARIANTS = ('-width, -cellSize, -voidFraction, -sphereRatio, -forces, -fluidVelocity, '
             '-fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
             '-semiImplicitAlpha, -maxTime, -demStep')
 
@@ -76,7 +76,7 @@ def check_run_length(o, s):
 
 
 def is_variant(o):
-    return any(o[k] for k in ('width', 'voidFraction', 'forces',
+    return any(o[k] for k in ('width', 'voidFraction', 'sphereRatio', 'forces',
                               'fluidVelocity', 'fluctuation', 'eddyLifetime',
                               'fluctuationSize', 'fluctuationAt', 'lift',
                               'minVoidFraction', 'grading', 'maxTime',
@@ -172,6 +172,16 @@ def check_coupling(o, s):
     if o['voidFraction'] not in ('', 'virtualSphere', 'divided', 'centre'):
         raise OptionError("-voidFraction: unknown model '%s': use "
                           "virtualSphere, divided or centre" % o['voidFraction'])
+    if o['sphereRatio']:
+        if o['voidFraction'] not in ('', 'virtualSphere'):
+            raise OptionError("-sphereRatio is the virtual sphere's diameter "
+                              "over the grain's: it needs the virtualSphere "
+                              "model, not -voidFraction %s" % o['voidFraction'])
+        if not number(o['sphereRatio'], lambda k: k >= 1):
+            raise OptionError("-sphereRatio takes the virtual sphere's "
+                              "diameter over the grain's, at least 1 "
+                              "(default 4, the seed's), got '%s'"
+                              % o['sphereRatio'])
 
 
 def check_grading(o):

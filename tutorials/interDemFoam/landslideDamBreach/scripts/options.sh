@@ -21,6 +21,7 @@ tag=""
 widthOption=""
 cellSize=0.05
 voidFraction=""
+sphereRatio=""
 forces=""
 fluidVelocity=""
 fluctuation=""
@@ -54,6 +55,7 @@ parseOptions()
             -width)    widthOption="$2"; shift ;;
             -cellSize) cellSize="$2"; shift ;;
             -voidFraction) voidFraction="$2"; shift ;;
+            -sphereRatio) sphereRatio="$2"; shift ;;
             -forces)   forces="$2"; shift ;;
             -fluidVelocity) fluidVelocity="$2"; shift ;;
             -fluctuation) fluctuation="$2"; shift ;;
@@ -76,7 +78,7 @@ parseOptions()
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -sphereRatio, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
         esac
         shift
     done
@@ -97,6 +99,7 @@ checkOptions()
         setupOnly="$setupOnly" maxCo="$maxCo" \
         semiImplicitAlpha="$semiImplicitAlpha" jobs="$jobs" tag="$tag" \
         width="$widthOption" cellSize="$cellSize" voidFraction="$voidFraction" \
+        sphereRatio="$sphereRatio" \
         forces="$forces" fluidVelocity="$fluidVelocity" \
         fluctuation="$fluctuation" eddyLifetime="$eddyLifetime" \
         fluctuationSize="$fluctuationSize" fluctuationAt="$fluctuationAt" \

@@ -193,6 +193,10 @@ then
     done
 fi
 [ -n "$voidFraction" ] && foamDictionary -entry voidFraction -set "$voidFraction" "$dir"/constant/couplingProperties > /dev/null
+if [ -n "$sphereRatio" ]
+then
+    foamDictionary -entry virtualSphereCoeffs/diameterRatio -set "$sphereRatio" "$dir"/constant/couplingProperties > /dev/null || return 1
+fi
 [ -n "$forces" ] && foamDictionary -entry forces -set "( $forces )" "$dir"/constant/couplingProperties > /dev/null
 if [ -n "$lift" ]
 then
