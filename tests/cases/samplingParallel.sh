@@ -32,6 +32,10 @@
 # than 1e-4 of the largest F (the option takes effect). Control, run by
 # hand: a build in which a rank that does not host a particle adds its own
 # average instead of zero differs by 3.9e-3 in F and fails.
+# The rough-bed log law in the host cell (fluidVelocity bedSurfaceLogLaw:
+# the cells below and above the host across the METIS boundary, host rank
+# only) likewise: 2 ranks within 1e-7 of 1 rank, and its F differs from the
+# default run's by more than 1e-4 of the largest F.
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 
@@ -122,6 +126,12 @@ runCase seed-2 2 "fluidVelocity     cellPoint;
 velocityFluctuation { intensity 0.5; eddyTime 0.001; seed 5; }"
 runCase top-1 1 "fluidVelocity     grainTop;"
 runCase top-2 2 "fluidVelocity     grainTop;"
+logLaw="fluidVelocity     bedSurfaceLogLaw;
+bedSurfaceLogLawCoeffs { roughness 2.9; bedSolidFraction 0.56; }"
+runCase log-1 1 "$logLaw"
+runCase log-2 2 "$logLaw"
+grep -q "fluidVelocity bedSurfaceLogLaw" log-2/log.interDemFoam \
+    || fail "the 2-rank run did not report fluidVelocity bedSurfaceLogLaw"
 grep -q "fluidVelocity grainTop" top-2/log.interDemFoam \
     || fail "the 2-rank run did not report fluidVelocity grainTop"
 grep -q "fluidVelocity cellPoint" sampled-2/log.interDemFoam \
@@ -133,12 +143,16 @@ sampled=$(compareRuns sampled-1 sampled-2) || fail "cannot compare the cellPoint
 control=$(compareRuns sampled-2 seed-2) || fail "cannot compare the seeds"
 top=$(compareRuns top-1 top-2) || fail "cannot compare the grainTop runs"
 topEffect=$(compareRuns plain-1 top-1) || fail "cannot compare grainTop with the default"
+logRanks=$(compareRuns log-1 log-2) || fail "cannot compare the bedSurfaceLogLaw runs"
+logEffect=$(compareRuns plain-1 log-1) || fail "cannot compare bedSurfaceLogLaw with the default"
 echo "1 rank against 2, largest difference / largest value (F, U, DEM position, DEM velocity):"
 echo "  default:                   $plain"
 echo "  cellPoint + fluctuations:  $sampled"
 echo "  grainTop:                  $top"
+echo "  bedSurfaceLogLaw:          $logRanks"
 echo "  another seed (control):    $control"
 echo "  grainTop against the default, 1 rank: $topEffect"
+echo "  bedSurfaceLogLaw against the default, 1 rank: $logEffect"
 labels="F U position velocity"
 set -- $sampled
 for l in $labels
@@ -154,6 +168,16 @@ do
         "$l differs between 1 and 2 ranks by $1 of its largest value (> $tolerance)"
     shift
 done
+set -- $logRanks
+for l in $labels
+do
+    check "bedSurfaceLogLaw, 1 against 2 ranks: $l" "$1" "v <= $tolerance" \
+        "$l differs between 1 and 2 ranks by $1 of its largest value (> $tolerance)"
+    shift
+done
+set -- $logEffect
+check "bedSurfaceLogLaw against the default: F" "$1" "v > 1e-4" \
+    "bedSurfaceLogLaw gives the default's F within $1 of the largest: the option has no effect"
 set -- $topEffect
 check "grainTop against the default: F" "$1" "v > 1e-4" \
     "grainTop gives the default's F within $1 of the largest: the option has no effect"
@@ -163,4 +187,4 @@ then
     fail "negative control: F with another seed agrees within $tolerance ($1): the check cannot fail"
 fi
 echo "negative control: F with another seed differs by $1 (> $tolerance): the check fails on it"
-pass "cellPoint + fluctuations and grainTop on 2 ranks = 1 rank within $tolerance (F, U, DEM: $sampled and $top; default runs: $plain)"
+pass "cellPoint + fluctuations, grainTop and bedSurfaceLogLaw on 2 ranks = 1 rank within $tolerance (F, U, DEM: $sampled, $top and $logRanks; default runs: $plain)"

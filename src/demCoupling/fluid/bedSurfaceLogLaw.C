@@ -39,7 +39,7 @@ Foam::demCoupling::bedSurfaceLogLaw::bedSurfaceLogLaw
     (
         coeffs, "bedSolidFraction",
         [](const scalar v) { return v > 0 && v < 1; },
-        "between 0 and 1 (1 - eps in the packed bed)"
+        "between 0 and 1, both excluded (1 - eps in the packed bed)"
     );
 }
 
@@ -132,8 +132,11 @@ Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
     {
         const scalar phi = phiLow + (i + 0.5)*dphi;
         const scalar height = zCentre - r*Foam::cos(phi) - zE;
+        // the law below the anchor, no higher than it above
         const scalar u =
-            height > z0 ? magUabove*Foam::log(height/z0)/logAbove : 0;
+            height > z0
+          ? magUabove*min(Foam::log(height/z0)/logAbove, scalar(1))
+          : 0;
         const scalar s = Foam::sin(phi);
         u2Area += sqr(u)*2*sqr(r)*sqr(s)*dphi;
     }
@@ -145,7 +148,16 @@ Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
             constant::mathematical::pi - phiLow
           + Foam::sin(phiLow)*Foam::cos(phiLow)
         );
-    return
-        Foam::sqrt(u2Area/area)*(Uabove/magUabove)
-      + max(1 - exposedArea/area, 0)*Uhost;
+    // The exposed and the sheltered parts in quadrature (drag goes with
+    // u^2: a uniform flow gives its own speed), along their area-weighted
+    // directions
+    const scalar shelteredShare = max(1 - exposedArea/area, 0);
+    const scalar speed =
+        Foam::sqrt(u2Area/area + shelteredShare*magSqr(Uhost));
+    const vector direction
+    (
+        Foam::sqrt(u2Area/area)*(Uabove/magUabove) + shelteredShare*Uhost
+    );
+    const scalar magDirection = mag(direction);
+    return magDirection > VSMALL ? speed*direction/magDirection : Uhost;
 }

@@ -331,8 +331,16 @@ void Foam::demCoupling::fluidSampler::sampleBedSurfaceLogLaw
             const label celli = particles.cell[i];
             scalar zLow, zHigh;
             bedSurfaceLogLaw::verticalExtent(mesh, celli, up_, zLow, zHigh);
-            const scalar epsBelow =
-                valueInCellAbove(voidfraction, acrossEps, celli, -up_);
+            // A wall below (no face neighbour, no coupled patch) bounds
+            // the bed: it counts as a packed cell
+            const label downFace = faceAbove(mesh, celli, -up_);
+            const bool wallBelow =
+                !mesh.isInternalFace(downFace)
+             && !acrossEps.set(mesh.boundaryMesh().whichPatch(downFace));
+            const scalar solidBelow =
+                wallBelow
+              ? logLaw_->bedSolidFraction()
+              : 1 - valueInCellAbove(voidfraction, acrossEps, celli, -up_);
             return logLaw_->velocity
             (
                 particles.position[i] & up_,
@@ -340,7 +348,7 @@ void Foam::demCoupling::fluidSampler::sampleBedSurfaceLogLaw
                 zLow,
                 zHigh,
                 1 - voidfraction[celli],
-                1 - epsBelow,
+                solidBelow,
                 valueInCellAbove(U, acrossU, celli, up_),
                 U[celli]
             );
@@ -350,6 +358,33 @@ void Foam::demCoupling::fluidSampler::sampleBedSurfaceLogLaw
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::demCoupling::fluidSampler::faceAbove
+(
+    const fvMesh& mesh,
+    const label celli,
+    const vector& up
+)
+{
+    label upFace = -1;
+    scalar mostUp = -GREAT;
+    for (const label facei : mesh.cells()[celli])
+    {
+        vector n(mesh.faceAreas()[facei]);
+        if (mesh.faceOwner()[facei] != celli)
+        {
+            n = -n;
+        }
+        const scalar c = (n & up)/(mag(n) + VSMALL);
+        if (c > mostUp)
+        {
+            mostUp = c;
+            upFace = facei;
+        }
+    }
+    return upFace;
+}
+
 
 Foam::List<Foam::demCoupling::particleFluidState>
 Foam::demCoupling::fluidSampler::sample

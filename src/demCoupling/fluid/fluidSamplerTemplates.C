@@ -110,22 +110,7 @@ Type Foam::demCoupling::fluidSampler::valueInCellAbove
 )
 {
     const fvMesh& mesh = fld.mesh();
-    label upFace = -1;
-    scalar mostUp = -GREAT;
-    for (const label facei : mesh.cells()[celli])
-    {
-        vector n(mesh.faceAreas()[facei]);
-        if (mesh.faceOwner()[facei] != celli)
-        {
-            n = -n;
-        }
-        const scalar c = (n & up)/(mag(n) + VSMALL);
-        if (c > mostUp)
-        {
-            mostUp = c;
-            upFace = facei;
-        }
-    }
+    const label upFace = faceAbove(mesh, celli, up);
     if (mesh.isInternalFace(upFace))
     {
         const label owner = mesh.faceOwner()[upFace];

@@ -346,6 +346,87 @@ TEST(virtualSphereVoidFraction, CellSetStraddlingCellsAndNearAWall)
 }
 
 
+// The oblate spheroid (verticalDiameterRatio k_v < k; the unit-test
+// mesh's gravity is along -z): a grain of 0.6 dx at a cell centre with
+// k = 4 (1.2 dx across) and k_v = 2 (0.6 dx along z) takes its host and
+// the four face neighbours across gravity, not the two along it (the
+// sphere of 4 d takes all seven); off-centre and at a corner the set is
+// the brute-force spheroid's, and each cell of it holds V_p/V_VS
+TEST(virtualSphereVoidFraction, SpheroidKeepsTheVolumeWithinItsHeight)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar dx = Foam::cbrt(mesh.V()[0]);
+    dictionary dict(virtualSphereDict(0.05));
+    dict.subDictPtr("virtualSphereCoeffs")->add("verticalDiameterRatio", 2.0);
+    auto vf = voidFractionModel::New(dict, mesh);
+    auto sphere = voidFractionModel::New(virtualSphereDict(0.05), mesh);
+    auto eps = newEps(mesh);
+
+    const scalar d = 0.6*dx, R = 2*d, Rv = d;
+    const point centre = mesh.C()[62];
+    for
+    (
+        const point& x :
+        {
+            centre,
+            centre + vector(0.3*dx, -0.2*dx, 0.35*dx),
+            centre + 0.5*vector(dx, dx, dx)
+        }
+    )
+    {
+        particleData p;
+        p.resize(1);
+        p.position[0] = x;
+        p.diameter[0] = d;
+        p.cell[0] = mesh.findCell(x);
+        p.hostProc[0] = 0;
+        ASSERT_GE(p.cell[0], 0);
+        vf->update(p, particleCombine(), *eps);
+
+        labelHashSet expected;
+        forAll(mesh.C(), c)
+        {
+            const vector r(mesh.C()[c] - x);
+            if (sqr(r.x()/R) + sqr(r.y()/R) + sqr(r.z()/Rv) <= 1)
+            {
+                expected.insert(c);
+            }
+        }
+        expected.insert(p.cell[0]);
+        const labelUList cells(vf->cells(0));
+        EXPECT_EQ(label(cells.size()), expected.size()) << x.x() << " " << x.z();
+        scalar VVS = 0;
+        for (const label c : cells)
+        {
+            EXPECT_TRUE(expected.found(c)) << "cell " << c;
+            VVS += mesh.V()[c];
+        }
+        for (const label c : cells)
+        {
+            EXPECT_NEAR(1 - (*eps)[c], p.volume(0)/VVS, 1e-12);
+        }
+        if (x == centre)
+        {
+            EXPECT_EQ(cells.size(), 5);
+            for (const label c : cells)
+            {
+                EXPECT_LT(mag(mesh.C()[c].z() - x.z()), 1e-12*dx);
+            }
+            sphere->update(p, particleCombine(), *eps);
+            EXPECT_EQ(sphere->cells(0).size(), 7);
+        }
+    }
+
+    // k_v above k, or below 1, stops with the keyword named
+    for (const scalar kv : {5.0, 0.5})
+    {
+        dictionary bad(virtualSphereDict(0.05));
+        bad.subDictPtr("virtualSphereCoeffs")->add("verticalDiameterRatio", kv);
+        EXPECT_THROW(voidFractionModel::New(bad, mesh), Foam::error) << kv;
+    }
+}
+
+
 
 // One kernel for what a particle gives and what it sees: for every model,
 // sum_c V_c spread(X)_c = sum_i X_i (conservation), and

@@ -4,6 +4,7 @@
 #include "virtualSphere.H"
 #include "meshReach.H"
 #include "addToRunTimeSelectionTable.H"
+#include "gravityMeshObject.H"
 
 namespace Foam
 {
@@ -31,7 +32,8 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
         (
             inputCheck::subDict
             (
-                dict, "virtualSphereCoeffs", {"diameterRatio", "sizeThreshold"}
+                dict, "virtualSphereCoeffs",
+                {"diameterRatio", "sizeThreshold", "verticalDiameterRatio"}
             ),
             "diameterRatio",
             [](const scalar k) { return k >= 1; },
@@ -48,14 +50,39 @@ Foam::demCoupling::voidFractionModels::virtualSphere::virtualSphere
             " sphere; seed: 0.25)"
         )
     ),
+    verticalRatio_(diameterRatio_),
+    up_(0, 0, 1),
     binOrigin_(Zero),
     binSize_(1),
     binStart_(),
     binCells_(),
     sphereCells_()
 {
+    const dictionary& coeffs = dict.subDict("virtualSphereCoeffs");
+    verticalRatio_ = inputCheck::getOrDefault<scalar>
+    (
+        coeffs, "verticalDiameterRatio", diameterRatio_,
+        [&](const scalar kv) { return kv >= 1 && kv <= diameterRatio_; },
+        "between 1 and diameterRatio (" + Foam::name(diameterRatio_)
+      + "): the spheroid's diameter along gravity / d (default"
+        " diameterRatio, the sphere)"
+    );
     Info<< "    virtual sphere: diameter " << diameterRatio_ << " d for"
         << " particles with d > " << sizeThreshold_ << " dx" << endl;
+    if (verticalRatio_ < diameterRatio_)
+    {
+        const vector g(meshObjects::gravity::New(mesh.time()).value());
+        if (mag(g) < SMALL)
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "verticalDiameterRatio in " << coeffs.name()
+                << " needs gravity (constant/g, not zero): the spheroid's"
+                << " short axis is along it" << exit(FatalIOError);
+        }
+        up_ = -g/mag(g);
+        Info<< "    an oblate spheroid: " << verticalRatio_ << " d along"
+            << " gravity (verticalDiameterRatio)" << endl;
+    }
 
     // Bins of the cell centres: a uniform grid over the mesh's bounds
     // with about one centre per bin (a sphere query visits the few bins
@@ -150,6 +177,8 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
         const point& x0 = particles.position[i];
         const scalar R = 0.5*diameterRatio_*particles.diameter[i];
         const scalar R2 = sqr(R);
+        // The spheroid: |r|^2 + (k^2/k_v^2 - 1) (r.up)^2 <= R^2
+        const scalar flatten = sqr(diameterRatio_/verticalRatio_) - 1;
 
         // Cells whose centre is inside the sphere around x (bins of cell
         // centres that the sphere's box overlaps, filtered exactly); the
@@ -187,7 +216,15 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
                             const label c = binCells_[j];
                             if
                             (
-                                (c == host || magSqr(C[c] - x) <= R2)
+                                (
+                                    c == host
+                                 || (
+                                        flatten > 0
+                                      ? magSqr(C[c] - x)
+                                      + flatten*sqr((C[c] - x) & up_)
+                                      : magSqr(C[c] - x)
+                                    ) <= R2
+                                )
                              && (!image || cells.find(c) < 0)
                             )
                             {
