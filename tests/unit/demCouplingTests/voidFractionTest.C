@@ -209,6 +209,33 @@ dictionary anyModelDict(const word& model, const scalar minEps)
     return dict;
 }
 
+// Particle 0's cells are the expected set, and each holds the same solid
+// fraction V_p / V_VS (V_VS the set's volume)
+void expectSetAndEqualShares
+(
+    const fvMesh& mesh,
+    const voidFractionModel& vf,
+    const volScalarField& eps,
+    const particleData& p,
+    const labelHashSet& expected
+)
+{
+    const labelUList cells(vf.cells(0));
+    EXPECT_EQ(label(cells.size()), expected.size())
+        << p.position[0].x() << " " << p.position[0].y() << " "
+        << p.position[0].z();
+    scalar VVS = 0;
+    for (const label c : cells)
+    {
+        EXPECT_TRUE(expected.found(c)) << "cell " << c;
+        VVS += mesh.V()[c];
+    }
+    for (const label c : cells)
+    {
+        EXPECT_NEAR(1 - eps[c], p.volume(0)/VVS, 1e-12);
+    }
+}
+
 // Every cell whose centre is within R of x, and the host: the reference set
 labelHashSet bruteForceSphere
 (
@@ -302,19 +329,7 @@ TEST(virtualSphereVoidFraction, CellSetStraddlingCellsAndNearAWall)
         (
             bruteForceSphere(mesh, x, 2*0.6*dx, p.cell[0])
         );
-        const labelUList cells(vf->cells(0));
-        EXPECT_EQ(label(cells.size()), expected.size()) << x.x() << " " << x.y();
-        scalar VVS = 0;
-        for (const label c : cells)
-        {
-            EXPECT_TRUE(expected.found(c)) << "cell " << c;
-            VVS += mesh.V()[c];
-        }
-        // equal solid fraction V_p / V_VS in every cell of the set
-        for (const label c : cells)
-        {
-            EXPECT_NEAR(1 - (*eps)[c], p.volume(0)/VVS, 1e-12);
-        }
+        expectSetAndEqualShares(mesh, *vf, *eps, p, expected);
         EXPECT_NEAR(gSum((1 - eps->primitiveField())*mesh.V()),
                     p.volume(0), 1e-12*p.volume(0));
     }
@@ -393,18 +408,8 @@ TEST(virtualSphereVoidFraction, SpheroidKeepsTheVolumeWithinItsHeight)
             }
         }
         expected.insert(p.cell[0]);
+        expectSetAndEqualShares(mesh, *vf, *eps, p, expected);
         const labelUList cells(vf->cells(0));
-        EXPECT_EQ(label(cells.size()), expected.size()) << x.x() << " " << x.z();
-        scalar VVS = 0;
-        for (const label c : cells)
-        {
-            EXPECT_TRUE(expected.found(c)) << "cell " << c;
-            VVS += mesh.V()[c];
-        }
-        for (const label c : cells)
-        {
-            EXPECT_NEAR(1 - (*eps)[c], p.volume(0)/VVS, 1e-12);
-        }
         if (x == centre)
         {
             EXPECT_EQ(cells.size(), 5);
