@@ -4,6 +4,7 @@
 """The command line of damBreachAnalysis.py (its docstring is the usage):
 one function per command, each calling the module that does the job."""
 import argparse
+import os
 import sys
 
 from . import coarseness, compare, dam, deposit, ended, matrix, shields, summary
@@ -59,6 +60,13 @@ def main(argv, usage):
     if len(argv) >= 2 and argv[1] in COMMANDS \
             and len(argv) - 2 >= COMMANDS[argv[1]][0]:
         return COMMANDS[argv[1]][1](argv[2:])
+    if len(argv) == 2 and argv[1] in ('-h', '-help', '--help'):
+        print(usage)
+        return 0
+    if len(argv) == 2 and not os.path.isdir(argv[1]):
+        sys.exit('damBreachAnalysis.py: %s is no case folder (nor one of the'
+                 ' commands %s)\n\n%s'
+                 % (argv[1], ', '.join(sorted(COMMANDS)), usage))
     if len(argv) == 2:
         return summary.analyse(argv[1])
     sys.exit(usage)
