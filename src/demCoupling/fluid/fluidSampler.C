@@ -333,14 +333,13 @@ void Foam::demCoupling::fluidSampler::sampleBedSurfaceLogLaw
             bedSurfaceLogLaw::verticalExtent(mesh, celli, up_, zLow, zHigh);
             // A wall below (no face neighbour, no coupled patch) bounds
             // the bed: it counts as a packed cell
-            const label downFace = faceAbove(mesh, celli, -up_);
-            const bool wallBelow =
-                !mesh.isInternalFace(downFace)
-             && !acrossEps.set(mesh.boundaryMesh().whichPatch(downFace));
             const scalar solidBelow =
-                wallBelow
-              ? logLaw_->bedSolidFraction()
-              : 1 - valueInCellAbove(voidfraction, acrossEps, celli, -up_);
+                1
+              - valueInCellAbove
+                (
+                    voidfraction, acrossEps, celli, -up_,
+                    1 - logLaw_->bedSolidFraction()
+                );
             return logLaw_->velocity
             (
                 particles.position[i] & up_,

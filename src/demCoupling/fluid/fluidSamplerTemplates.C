@@ -109,6 +109,21 @@ Type Foam::demCoupling::fluidSampler::valueInCellAbove
     const vector& up
 )
 {
+    // A wall or an open boundary above: nothing arrives from beyond it
+    return valueInCellAbove(fld, across, celli, up, fld[celli]);
+}
+
+
+template<class Type>
+Type Foam::demCoupling::fluidSampler::valueInCellAbove
+(
+    const GeometricField<Type, fvPatchField, volMesh>& fld,
+    const PtrList<Field<Type>>& across,
+    const label celli,
+    const vector& up,
+    const Type& beyondBoundary
+)
+{
     const fvMesh& mesh = fld.mesh();
     const label upFace = faceAbove(mesh, celli, up);
     if (mesh.isInternalFace(upFace))
@@ -122,8 +137,7 @@ Type Foam::demCoupling::fluidSampler::valueInCellAbove
     {
         return across[patchi][upFace - patches[patchi].start()];
     }
-    // A wall or an open boundary above: nothing arrives from beyond it
-    return fld[celli];
+    return beyondBoundary;
 }
 
 

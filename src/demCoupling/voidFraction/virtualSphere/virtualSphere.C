@@ -157,6 +157,9 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
 
     const boundBox localBounds(meshReachBox(mesh_));
 
+    // The spheroid: |r|^2 + (k^2/k_v^2 - 1) (r.up)^2 <= R^2 (0: the sphere)
+    const scalar flatten = sqr(diameterRatio_/verticalRatio_) - 1;
+
     forAll(particles.position, i)
     {
         const label host = particles.cell[i];
@@ -177,8 +180,6 @@ void Foam::demCoupling::voidFractionModels::virtualSphere::distribute
         const point& x0 = particles.position[i];
         const scalar R = 0.5*diameterRatio_*particles.diameter[i];
         const scalar R2 = sqr(R);
-        // The spheroid: |r|^2 + (k^2/k_v^2 - 1) (r.up)^2 <= R^2
-        const scalar flatten = sqr(diameterRatio_/verticalRatio_) - 1;
 
         // Cells whose centre is inside the sphere around x (bins of cell
         // centres that the sphere's box overlaps, filtered exactly); the
