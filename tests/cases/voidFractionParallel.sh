@@ -7,10 +7,14 @@
 # that METIS splits across 2 subdomains: for centre, divided, virtualSphere
 # and diffusion, the voidfraction field on 2 ranks (reconstructPar) equals
 # the serial one to 1e-12, and sum(eps V) = V_box - sum(V_p) to 1e-9
-# relative (no volume lost at the processor boundary). A missing, empty or
-# non-numeric field or table fails; negative controls at the end check that.
-# Reference: the serial run and the particles' volume. Measured: 1e-15 (eps)
-# and 4e-14 (volume) (docs/voidFraction.md).
+# relative (no volume lost at the processor boundary). The same for
+# centreSpill: the centre model with a floor of 0.6 (each particle's cell,
+# 0.52 solid, is over the cap of 0.4) and voidFractionFloor spill, which
+# moves the excess to the neighbouring cells across the processor boundary
+# too: the serial log must report spilled cells and neither log a floor hit.
+# A missing, empty or non-numeric field or table fails; negative controls at
+# the end check that. Reference: the serial run and the particles' volume.
+# Measured: 1e-15 (eps) and 4e-14 (volume) (docs/voidFraction.md).
 #------------------------------------------------------------------------------
 . "${0%/*}/caseFunctions.sh"
 
@@ -51,7 +55,7 @@ volumeError()
 Vbox=1.6e-05
 Vp=$(awk 'BEGIN { printf "%.15g\n", 20*3.14159265358979*0.004^3/6 }')
 
-for model in centre divided virtualSphere diffusion
+for model in centre divided virtualSphere diffusion centreSpill
 do
     for mode in serial parallel
     do
@@ -59,7 +63,12 @@ do
         cp -r "$src" "$d"
         (
             cd "$d" || exit 1
-            sed -i "s/^voidFraction .*/voidFraction      $model;/" constant/couplingProperties
+            if [ "$model" = centreSpill ]
+            then
+                sed -i "s/^voidFraction .*/voidFraction      centre;/; s/^minVoidFraction .*/minVoidFraction   0.6;\nvoidFractionFloor spill;/" constant/couplingProperties
+            else
+                sed -i "s/^voidFraction .*/voidFraction      $model;/" constant/couplingProperties
+            fi
             runApplication blockMesh || exit 1
             runSolver "$mode"
         ) || fail "$d did not run (see $runDir/$name/$d/log.*)"
@@ -86,6 +95,19 @@ do
         "$model: particle volume not conserved on 2 ranks ($err)"
     check "$model: min eps" "$minEps" 'v < 0.999' \
         "$model: no particle volume in the field (min eps $minEps)"
+    if [ "$model" = centreSpill ]
+    then
+        spilled=$(grep -c "^Voidfraction spill" "$model-serial/log.interDemFoam")
+        hits=$(cat "$model-serial/log.interDemFoam" "$model-parallel/log.interDemFoam" \
+            | grep -c "^Warning: voidfraction floor")
+        echo "$model: $spilled step(s) with spilled cells (serial), $hits floor hit line(s)"
+        check "$model: steps that spilled" "$spilled" 'v >= 1' \
+            "$model: the serial run spilled nothing: the case does not test the spill"
+        check "$model: floor hit lines" "$hits" 'v == 0' \
+            "$model: the spill left cells at the floor"
+        check "$model: min eps at the floor" "$minEps" 'v > 0.6 - 1e-9 && v < 0.6 + 1e-9' \
+            "$model: min eps $minEps, not the floor 0.6 the spill fills cells to"
+    fi
 done
 
 # negative controls: the volume check fails on a missing table, an empty

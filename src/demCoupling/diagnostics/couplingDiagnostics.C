@@ -70,6 +70,14 @@ void Foam::demCoupling::couplingDiagnostics::report
                 << " s: no fluid force on them (outsideParticles ignore;"
                 << " 'delete' removes them from the DEM)" << endl;
         }
+        if (s.spilledCells)
+        {
+            Info<< "Voidfraction spill: " << s.spilledCells << " cell(s)"
+                << " held more solid than 1 - " << s.floor << " and moved"
+                << " the rest to their neighbours at t = "
+                << runTime.timeName() << " s (" << s.totalSpilledCells
+                << " since the start)" << endl;
+        }
         if (s.floorHits)
         {
             Info<< "Warning: voidfraction floor " << s.floor

@@ -665,6 +665,8 @@ void Foam::demCoupling::particleCloud::report()
     step.floorHits = voidFraction_->floorHits();
     step.totalFloorHits = voidFraction_->totalFloorHits();
     step.floor = voidFraction_->minVoidFraction();
+    step.spilledCells = voidFraction_->spilledCells();
+    step.totalSpilledCells = voidFraction_->totalSpilledCells();
     step.cellsPerStep = cellsPerStep_;
 
     diagnostics_.report(mesh_.time(), &step);

@@ -501,3 +501,149 @@ TEST(diffusionVoidFraction, SpreadsSymmetricallyAndConserves)
     EXPECT_LT(solid[62], p.volume(0)/mesh.V()[62]);
     EXPECT_NEAR(gSum(solid*mesh.V()), p.volume(0), 1e-10*p.volume(0));
 }
+
+
+// voidFractionFloor spill: the solid beyond 1 - minVoidFraction moves to the
+// face neighbours in proportion to their room (solidSpill), conserving
+// sum (1 - eps) V where clip loses it
+TEST(voidFractionFloor, SpillSharesTheExcessAmongTheNeighbours)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar Vc = mesh.V()[62];
+    const scalar dx = Foam::cbrt(Vc);
+
+    // one particle of 1.3 cells' volume in the centre cell (62) and one of
+    // 0.9 in a corner cell (0), floor 0.2: excesses 0.5 Vc and 0.1 Vc
+    particleData p;
+    p.resize(2);
+    const label cells[2] = {62, 0};
+    const scalar volumes[2] = {1.3, 0.9};
+    for (label i = 0; i < 2; ++i)
+    {
+        p.position[i] = mesh.C()[cells[i]];
+        p.cell[i] = cells[i];
+        p.hostProc[i] = 0;
+        p.density[i] = 2500;
+        p.diameter[i] = Foam::cbrt(6*volumes[i]*Vc/constant::mathematical::pi);
+    }
+    ASSERT_GT(p.diameter[0], dx);
+
+    dictionary dict(modelDict("centre", 0.2));
+    dict.add("voidFractionFloor", "spill");
+    auto model = voidFractionModel::New(dict, mesh);
+    auto eps = newEps(mesh);
+    model->update(p, particleCombine(), *eps);
+
+    // the centre cell's six neighbours are empty: each takes 0.5/6; the
+    // corner cell has three (two walls): each takes 0.1/3
+    EXPECT_NEAR((*eps)[62], 0.2, 1e-12);
+    for (const label n : {61, 63, 57, 67, 37, 87})
+    {
+        EXPECT_NEAR((*eps)[n], 1 - 0.5/6, 1e-12) << "cell " << n;
+    }
+    EXPECT_NEAR((*eps)[0], 0.2, 1e-12);
+    for (const label n : {1, 5, 25})
+    {
+        EXPECT_NEAR((*eps)[n], 1 - 0.1/3, 1e-12) << "cell " << n;
+    }
+    EXPECT_EQ(model->floorHits(), 0);
+    EXPECT_EQ(model->spilledCells(), 2);
+
+    const scalar Vp = p.volume(0) + p.volume(1);
+    EXPECT_NEAR(gSum((1 - eps->primitiveField())*mesh.V()), Vp, 1e-12*Vp);
+
+    // clip, the default, loses the excess and counts both cells
+    auto clip = voidFractionModel::New(modelDict("centre", 0.2), mesh);
+    clip->update(p, particleCombine(), *eps);
+    EXPECT_EQ(clip->floorHits(), 2);
+    EXPECT_NEAR
+    (
+        gSum((1 - eps->primitiveField())*mesh.V()), Vp - 0.6*Vc, 1e-12*Vp
+    );
+
+    // a word that is neither stops the run
+    dictionary bad(modelDict("centre", 0.2));
+    bad.add("voidFractionFloor", "spil");
+    EXPECT_THROW(voidFractionModel::New(bad, mesh), Foam::error);
+}
+
+
+// Excess behind full cells: the centre cell (62) holds 1.3 cells' volume
+// and its six neighbours each hold exactly the cap (0.8, floor 0.2). The
+// first pass pushes 0.5/6 through each neighbour; the second passes it on to
+// each one's five other neighbours, 0.5/30 apiece: the cell two steps along
+// x (60) ends at 1 - 0.5/30, a cell next to two of them (56) at 1 - 2 0.5/30
+TEST(voidFractionFloor, SpillPassesExcessThroughFullCells)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar Vc = mesh.V()[62];
+
+    const labelList cells({62, 61, 63, 57, 67, 37, 87});
+    particleData p;
+    p.resize(cells.size());
+    forAll(cells, i)
+    {
+        p.position[i] = mesh.C()[cells[i]];
+        p.cell[i] = cells[i];
+        p.hostProc[i] = 0;
+        p.density[i] = 2500;
+        const scalar volume = i == 0 ? 1.3 : 0.8;
+        p.diameter[i] = Foam::cbrt(6*volume*Vc/constant::mathematical::pi);
+    }
+    scalar Vp = 0;
+    forAll(p.diameter, i) { Vp += p.volume(i); }
+
+    dictionary dict(modelDict("centre", 0.2));
+    dict.add("voidFractionFloor", "spill");
+    auto model = voidFractionModel::New(dict, mesh);
+    auto eps = newEps(mesh);
+    model->update(p, particleCombine(), *eps);
+
+    EXPECT_EQ(model->floorHits(), 0);
+    for (const label c : cells)
+    {
+        EXPECT_NEAR((*eps)[c], 0.2, 1e-12) << "cell " << c;
+    }
+    EXPECT_NEAR((*eps)[60], 1 - 0.5/30, 1e-12);
+    EXPECT_NEAR((*eps)[56], 1 - 2*0.5/30, 1e-12);
+    EXPECT_NEAR(gSum((1 - eps->primitiveField())*mesh.V()), Vp, 1e-12*Vp);
+}
+
+
+// A random packing: 24 grains of 0.9-1.3 dx in the 27 cells around the
+// centre (a mean solid fraction near 0.6) put several cells beyond the cap
+// of 0.7; the spill leaves none there and keeps the volume
+TEST(voidFractionFloor, SpillEmptiesARandomPackingConservingVolume)
+{
+    const fvMesh& mesh = testing_demCoupling::mesh();
+    const scalar dx = Foam::cbrt(mesh.V()[62]);
+
+    Random rnd(77);
+    particleData p;
+    p.resize(24);
+    forAll(p.diameter, i)
+    {
+        p.position[i] = mesh.C()[62]
+          + 1.4*dx*(2*rnd.sample01<vector>() - vector::one);
+        p.cell[i] = mesh.findCell(p.position[i]);
+        p.hostProc[i] = 0;
+        p.density[i] = 2500;
+        p.diameter[i] = (0.9 + 0.4*rnd.sample01<scalar>())*dx;
+    }
+    scalar Vp = 0;
+    forAll(p.diameter, i) { Vp += p.volume(i); }
+
+    auto eps = newEps(mesh);
+    auto clip = voidFractionModel::New(modelDict("centre", 0.3), mesh);
+    clip->update(p, particleCombine(), *eps);
+    ASSERT_GE(clip->floorHits(), 3);
+
+    dictionary dict(modelDict("centre", 0.3));
+    dict.add("voidFractionFloor", "spill");
+    auto model = voidFractionModel::New(dict, mesh);
+    model->update(p, particleCombine(), *eps);
+    EXPECT_EQ(model->floorHits(), 0);
+    EXPECT_EQ(model->spilledCells(), clip->floorHits());
+    EXPECT_GE(gMin(eps->primitiveField()), 0.3 - 1e-12);
+    EXPECT_NEAR(gSum((1 - eps->primitiveField())*mesh.V()), Vp, 1e-12*Vp);
+}

@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "voidFractionModel.H"
 #include "couplingKeywords.H"
+#include "solidSpill.H"
 
 namespace Foam
 {
@@ -18,10 +19,21 @@ namespace
     // The keywords of couplingProperties this family reads
     const Foam::demCoupling::couplingKeywords::declare keywords
     (
-        {"voidFraction", "minVoidFraction"},
+        {"voidFraction", "minVoidFraction", "voidFractionFloor"},
         &Foam::demCoupling::voidFractionModel::modelNames
     );
 }
+
+
+const Foam::Enum
+<
+    Foam::demCoupling::voidFractionModel::floorTreatment
+>
+Foam::demCoupling::voidFractionModel::floorTreatmentNames
+({
+    {floorTreatment::clip, "clip"},
+    {floorTreatment::spill, "spill"},
+});
 
 
 Foam::demCoupling::voidFractionModel::voidFractionModel
@@ -46,7 +58,20 @@ Foam::demCoupling::voidFractionModel::voidFractionModel
     weightList_(),
     lastAdded_(-1),
     floorHits_(0),
-    totalFloorHits_(0)
+    totalFloorHits_(0),
+    floorTreatment_
+    (
+        inputCheck::selectOrDefault
+        (
+            dict, "voidFractionFloor", floorTreatmentNames,
+            floorTreatment::clip,
+            "clip (eps set to minVoidFraction, the solid beyond it lost to"
+            " the mixture) and spill (the solid beyond it moved to the"
+            " neighbouring cells, conserved)"
+        )
+    ),
+    spilledCells_(0),
+    totalSpilledCells_(0)
 {}
 
 
@@ -137,20 +162,33 @@ void Foam::demCoupling::voidFractionModel::update
     {
         Vp[i] = particles.volume(i);
     }
-    const scalarField solid(spread(Vp));
+    scalarField solid(spread(Vp));
 
-    floorHits_ = 0;
     scalarField& epsI = eps.primitiveFieldRef();
-    forAll(epsI, c)
+    floorHits_ = 0;
+    if (floorTreatment_ == floorTreatment::spill)
     {
-        epsI[c] = 1 - solid[c];
-        if (epsI[c] < minVoidFraction_)
+        floorHits_ = solidSpill(mesh_, 1 - minVoidFraction_)
+            .spill(solid, spilledCells_);
+        totalSpilledCells_ += spilledCells_;
+        forAll(epsI, c)
         {
-            epsI[c] = minVoidFraction_;
-            ++floorHits_;
+            epsI[c] = max(1 - solid[c], minVoidFraction_);
         }
     }
-    reduce(floorHits_, sumOp<label>());
+    else
+    {
+        forAll(epsI, c)
+        {
+            epsI[c] = 1 - solid[c];
+            if (epsI[c] < minVoidFraction_)
+            {
+                epsI[c] = minVoidFraction_;
+                ++floorHits_;
+            }
+        }
+        reduce(floorHits_, sumOp<label>());
+    }
     totalFloorHits_ += floorHits_;
 
     eps.correctBoundaryConditions();

@@ -32,7 +32,7 @@ PIECE_LENGTH = '20'     # s, the pieces after the first
 ALL = 'C2 F1 F2 F3 F4 C1 C3 C4'
 # the options that make a variant of the scene (its own case: -tag)
 VARIANTS = ('-width, -cellSize, -voidFraction, -sphereRatio, -forces, -fluidVelocity, '
-            '-fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, '
+            '-fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -voidFractionFloor, -grading, -bed, -maxCo, '
             '-semiImplicitAlpha, -maxTime, -demStep')
 
 
@@ -79,7 +79,8 @@ def is_variant(o):
     return any(o[k] for k in ('width', 'voidFraction', 'sphereRatio', 'forces',
                               'fluidVelocity', 'fluctuation', 'eddyLifetime',
                               'fluctuationSize', 'fluctuationAt', 'lift',
-                              'minVoidFraction', 'grading', 'maxTime',
+                              'minVoidFraction', 'voidFractionFloor',
+                              'grading', 'maxTime',
                               'demStep')) \
         or o['cellSize'] != '0.05' or o['bed'] != 'rough' \
         or o['turbulence'] != 'laminar' \
@@ -107,8 +108,8 @@ def check_cells(o, s):
 
 
 def check_coupling(o, s):
-    """-fluidVelocity, -minVoidFraction, -fluctuation, -eddyLifetime,
-    -voidFraction."""
+    """-fluidVelocity, -minVoidFraction, -voidFractionFloor, -fluctuation,
+    -eddyLifetime, -voidFraction."""
     if o['fluidVelocity'] not in ('', 'voidFractionAverage', 'cellPoint',
                                   'grainTop'):
         raise OptionError("-fluidVelocity: use voidFractionAverage (the "
@@ -119,6 +120,12 @@ def check_coupling(o, s):
         raise OptionError("-minVoidFraction takes the floor of the void "
                           "fraction, a number between 0 and 1 (exclusive), "
                           "got '%s'" % o['minVoidFraction'])
+    if o['voidFractionFloor'] not in ('', 'clip', 'spill'):
+        raise OptionError("-voidFractionFloor: use clip (the default: eps "
+                          "set to -minVoidFraction where the grains hold "
+                          "more) or spill (the solid beyond it moved to the "
+                          "neighbouring cells), got '%s'"
+                          % o['voidFractionFloor'])
     if o['turbulence'] not in ('laminar', 'kOmegaSST'):
         raise OptionError("-turbulence: use laminar (the default) or "
                           "kOmegaSST (k-omega SST with the fluid fraction in "

@@ -31,6 +31,7 @@ fluctuationAt=""
 lift=""
 turbulence=laminar
 minVoidFraction=""
+voidFractionFloor=""
 grading=""
 bed=rough
 maxTimeOption=""
@@ -65,6 +66,7 @@ parseOptions()
             -lift)     lift="$2"; shift ;;
             -turbulence) turbulence="$2"; shift ;;
             -minVoidFraction) minVoidFraction="$2"; shift ;;
+            -voidFractionFloor) voidFractionFloor="$2"; shift ;;
             -grading)  grading="$2"; shift ;;
             -bed)      bed="$2"; shift ;;
             -setupOnly) setupOnly=yes ;;
@@ -78,7 +80,7 @@ parseOptions()
             -lakeLevel) lakeLevel="$2"; shift ;;
             -buildDam) buildDam="$2"; shift
                        [ -n "$buildDam" ] || { echo "Allrun: -buildDam needs materials (C, F or \"C F\")"; exit 1; } ;;
-            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -sphereRatio, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
+            *) echo "Allrun: unknown option '$1' (use -scenario, -scale, -endTime, -parallel, -jobs, -lakeLevel, -buildDam, -setupOnly, -resume, -tag, -width, -cellSize, -voidFraction, -sphereRatio, -forces, -fluidVelocity, -fluctuation, -eddyLifetime, -fluctuationSize, -fluctuationAt, -lift, -turbulence, -minVoidFraction, -voidFractionFloor, -grading, -bed, -maxCo, -semiImplicitAlpha, -maxTime, -demGrid, -demStep, -sample)"; exit 1 ;;
         esac
         shift
     done
@@ -106,6 +108,7 @@ checkOptions()
         lift="$lift" \
         turbulence="$turbulence" \
         minVoidFraction="$minVoidFraction" \
+        voidFractionFloor="$voidFractionFloor" \
         grading="$grading" bed="$bed" maxTime="$maxTimeOption" \
         demGrid="$demGrid" demStep="$demStep" resume="$resume" \
         sample="$sample") \

@@ -218,6 +218,10 @@ if [ -n "$minVoidFraction" ]
 then
     foamDictionary -entry minVoidFraction -set "$minVoidFraction" "$dir"/constant/couplingProperties > /dev/null || return 1
 fi
+if [ -n "$voidFractionFloor" ]
+then
+    foamDictionary -entry voidFractionFloor -add "$voidFractionFloor" "$dir"/constant/couplingProperties > /dev/null || return 1
+fi
 if [ "$fluctuation" = turbulence ]
 then
     local entries=""
