@@ -9,7 +9,7 @@
 # time, as a new user would: every couplingProperties keyword removed or
 # given a bad value, DEM script lines removed or given bad numbers,
 # controlDict times, transport properties, gravity, initial fields and the
-# mesh (the list below, MUTATIONS, 95 of them).
+# mesh (the list below, MUTATIONS, 97 of them).
 # Asserts, for every mutation: the run ends with exit 0 (and "End"), or
 # with a clear error: exit 1 and a "FOAM FATAL" line; never a signal (a
 # crash), a hang (60 s) or a non-zero exit without an error line (a silent
@@ -22,7 +22,7 @@
 # Prints the counts (exit 0, clear error, signal, hang, silent abort).
 # Reference: issue #51's mutation study (70 mutations on such a case: 6
 # floating-point crashes, 1 silent MPI_ABORT, 3 silent runs before the
-# guards). Measured: all 95 pass, 22 with exit 0 and 73 with a clear
+# guards). Measured: all 97 pass, 23 with exit 0 and 74 with a clear
 # error, none crashes, hangs or aborts silently (61 s on 2 cores).
 # Negative control: a solver built without the transportProperties guard
 # (caseInputCheck::transportProperties not called in createFields.H)
@@ -60,6 +60,8 @@ cp_noMomentumCoupling | error:momentumCoupling                    | solver | sed
 cp_badMomentumCoupling| error:Unknown momentumCoupling model implicit;semiImplicit | solver | sed -i 's/^momentumCoupling .*/momentumCoupling implicit;/' constant/couplingProperties
 cp_explicitCoupling   | ok                                       | solver | sed -i 's/^momentumCoupling .*/momentumCoupling explicit;/' constant/couplingProperties
 cp_unknownKeyword     | error:Unknown keyword 'minVoidfraction';Did you mean 'minVoidFraction' | solver | echo 'minVoidfraction 0.3;' >> constant/couplingProperties
+cp_floorTreatmentBad  | error:voidFractionFloor;spil;clip;spill | solver | echo 'voidFractionFloor spil;' >> constant/couplingProperties
+cp_floorSpill         | ok                                       | solver | echo 'voidFractionFloor spill;' >> constant/couplingProperties
 cp_demDragBad         | error:demDrag 'sometimes';implicit       | solver | echo 'demDrag sometimes;' >> constant/couplingProperties
 cp_demDragExplicit    | ok                                       | solver | echo 'demDrag explicit;' >> constant/couplingProperties
 cp_outsideBad         | error:outsideParticles 'drop';delete     | solver | echo 'outsideParticles drop;' >> constant/couplingProperties

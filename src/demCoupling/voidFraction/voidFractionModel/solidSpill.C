@@ -76,7 +76,7 @@ Foam::label Foam::demCoupling::solidSpill::spill
                 excess[c] = d;
                 ++over;
             }
-            else if (d < 0)
+            else if (d < -tolerance_*V[c])
             {
                 room[c] = -d;
             }

@@ -3,7 +3,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later (see LICENSE)
 #include "voidFractionModel.H"
 #include "couplingKeywords.H"
-#include "solidSpill.H"
 
 namespace Foam
 {
@@ -71,7 +70,8 @@ Foam::demCoupling::voidFractionModel::voidFractionModel
         )
     ),
     spilledCells_(0),
-    totalSpilledCells_(0)
+    totalSpilledCells_(0),
+    spill_()
 {}
 
 
@@ -168,8 +168,11 @@ void Foam::demCoupling::voidFractionModel::update
     floorHits_ = 0;
     if (floorTreatment_ == floorTreatment::spill)
     {
-        floorHits_ = solidSpill(mesh_, 1 - minVoidFraction_)
-            .spill(solid, spilledCells_);
+        if (!spill_)
+        {
+            spill_.reset(new solidSpill(mesh_, 1 - minVoidFraction_));
+        }
+        floorHits_ = spill_->spill(solid, spilledCells_);
         totalSpilledCells_ += spilledCells_;
         forAll(epsI, c)
         {

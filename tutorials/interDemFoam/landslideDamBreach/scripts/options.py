@@ -122,9 +122,9 @@ def check_coupling(o, s):
                           "got '%s'" % o['minVoidFraction'])
     if o['voidFractionFloor'] not in ('', 'clip', 'spill'):
         raise OptionError("-voidFractionFloor: use clip (the default: eps "
-                          "set to -minVoidFraction where the grains hold "
-                          "more) or spill (the solid beyond it moved to the "
-                          "neighbouring cells), got '%s'"
+                          "set to the floor, -minVoidFraction, where the "
+                          "grains hold more) or spill (the solid beyond it "
+                          "moved to the neighbouring cells), got '%s'"
                           % o['voidFractionFloor'])
     if o['turbulence'] not in ('laminar', 'kOmegaSST'):
         raise OptionError("-turbulence: use laminar (the default) or "
