@@ -61,13 +61,14 @@ Foam::label Foam::demCoupling::solidSpill::spill
 {
     const scalarField& V = mesh_.V();
     spilledCells = 0;
-    label over = 0;
 
-    for (label pass = 0; pass < maxPasses_; ++pass)
+    // Each pass starts by counting the cells over the cap; the count after
+    // the last pass is what is left over it
+    for (label pass = 0; ; ++pass)
     {
         scalarField excess(V.size(), Zero);     // volume above the cap
         scalarField room(V.size(), Zero);       // volume below it
-        over = 0;
+        label over = 0;
         forAll(V, c)
         {
             const scalar d = (solidFraction[c] - maxSolidFraction_)*V[c];
@@ -82,13 +83,13 @@ Foam::label Foam::demCoupling::solidSpill::spill
             }
         }
         reduce(over, sumOp<label>());
-        if (over == 0)
-        {
-            break;
-        }
         if (pass == 0)
         {
             spilledCells = over;
+        }
+        if (over == 0 || pass == maxPasses_)
+        {
+            return over;
         }
 
         // The share of its neighbours' room each over-full cell fills;
@@ -121,19 +122,4 @@ Foam::label Foam::demCoupling::solidSpill::spill
             solidFraction[c] += (room[c]*gainShare[c] + gainPush[c])/V[c];
         }
     }
-
-    if (over > 0)
-    {
-        // Count what the last pass left over the cap
-        over = 0;
-        forAll(V, c)
-        {
-            if (solidFraction[c] - maxSolidFraction_ > tolerance_)
-            {
-                ++over;
-            }
-        }
-        reduce(over, sumOp<label>());
-    }
-    return over;
 }

@@ -58,21 +58,23 @@ Foam::demCoupling::voidFractionModel::voidFractionModel
     lastAdded_(-1),
     floorHits_(0),
     totalFloorHits_(0),
-    floorTreatment_
-    (
-        inputCheck::selectOrDefault
-        (
-            dict, "voidFractionFloor", floorTreatmentNames,
-            floorTreatment::clip,
-            "clip (eps set to minVoidFraction, the solid beyond it lost to"
-            " the mixture) and spill (the solid beyond it moved to the"
-            " neighbouring cells, conserved)"
-        )
-    ),
+    spill_(),
     spilledCells_(0),
-    totalSpilledCells_(0),
-    spill_()
-{}
+    totalSpilledCells_(0)
+{
+    const floorTreatment floor = inputCheck::selectOrDefault
+    (
+        dict, "voidFractionFloor", floorTreatmentNames,
+        floorTreatment::clip,
+        "clip (eps set to minVoidFraction, the solid beyond it lost to"
+        " the mixture) and spill (the solid beyond it moved to the"
+        " neighbouring cells, conserved)"
+    );
+    if (floor == floorTreatment::spill)
+    {
+        spill_.reset(new solidSpill(mesh_, 1 - minVoidFraction_));
+    }
+}
 
 
 Foam::autoPtr<Foam::demCoupling::voidFractionModel>
@@ -166,12 +168,8 @@ void Foam::demCoupling::voidFractionModel::update
 
     scalarField& epsI = eps.primitiveFieldRef();
     floorHits_ = 0;
-    if (floorTreatment_ == floorTreatment::spill)
+    if (spill_)
     {
-        if (!spill_)
-        {
-            spill_.reset(new solidSpill(mesh_, 1 - minVoidFraction_));
-        }
         floorHits_ = spill_->spill(solid, spilledCells_);
         totalSpilledCells_ += spilledCells_;
         forAll(epsI, c)
