@@ -37,8 +37,9 @@
 #       here: the pressure-gradient force alone then carries the bed's form
 #       drag, the water runs at 7.6 m/s and q* = 2.3 (measured;
 #       docs/erosion.md).
-#   k-omega SST (the tutorial's default: eps in its equations, the grains
-#       damping it, fluctuations from its k and epsilon, h = 6 d), theta =
+#   k-omega SST (the tutorial's former default, -preset kSized: eps in its
+#       equations, the grains damping it, fluctuations from its k and
+#       epsilon, h = 6 d), theta =
 #       0.8: q* within a factor of 2 of Wong-Parker (2.58; measured 1.46)
 #       with the grains carrying rho g S h within 10 %; negative control:
 #       the laminar run at 0.8 must fail it (0.547 = 0.21 of Wong-Parker)
@@ -55,11 +56,14 @@
 #       least twice the q* of the grainTop run (measured 0.124 against
 #       0.0293), and the surface layer's vertical fluid force less buoyancy
 #       0.03-0.5 of its submerged weight (measured 0.060; grainTop 0.005)
-#   a virtual sphere of 2 d with voidFractionFloor spill and the cellAbove
-#       options, theta 0.3: q* within a factor of 2 of Wong-Parker (0.498;
-#       measured 0.407), the grains carrying rho g S h within 10 %, spill
-#       set, no cell clipped; negative control: the laminar run at 0.3
-#       must fail it
+#   the tutorial's default model (-preset cellAbove: the cellAbove options
+#       with a virtual sphere of 2 d and voidFractionFloor spill), run with
+#       no model option, theta 0.3: its couplingProperties hold that model,
+#       q* within a factor of 2 of Wong-Parker (0.498; measured 0.407), the
+#       grains carrying rho g S h within 10 %, no cell clipped; negative
+#       control: the laminar run at 0.3 must fail it
+#   every other run takes -preset kSized (the former default) with its
+#       own options, as before
 #   a mobilised start (-mobilise "0.8 2", laminar), theta 0.2: the start
 #       moves the bed (q* > 0.1 over 1-2 s), the grains then carry theta
 #       0.2 within 10 %, and the bed stops (no sustained transport over
@@ -87,8 +91,10 @@ thetaFluct=0.3
 thetaAbove=0.1
 REF_QSTAR=0.5            # q* at theta 0.8, small channel: measured 0.570 +- 0.033 (0.502 with explicit DEM drag)
 endTime=6
-# the laminar channel of these checks (the tutorial's default is turbulent)
-laminar="-turbulence laminar -depth 0.02 -fluctuation none"
+# the laminar channel of these checks (the tutorial's default is turbulent),
+# with the former default's other options (-preset kSized: the virtual
+# sphere of 4 d and its average velocity, no lift, the floor clipped)
+laminar="-preset kSized -turbulence laminar -depth 0.02 -fluctuation none"
 
 copyTutorial bedload bedload
 ./Allrun $laminar -size small -theta "$thetaLow $thetaHigh" -endTime $endTime > log.Allrun 2>&1 \
@@ -222,14 +228,15 @@ check "fluctuations: fluid force on the grains / imposed stress" "$fRatio" \
 controlRun laminar "$thetaFluct" "without fluctuations" "the fluctuation check"
 l1=$control1 l2=$control2
 
-# The tutorial's configuration (k-omega SST with eps, the grains' drag
-# damping it, fluctuations from its k and epsilon, h = 6 d) at theta 0.8:
+# The tutorial's former default (-preset kSized: k-omega SST with eps, the
+# grains' drag damping it, fluctuations from its k and epsilon, h = 6 d)
+# at theta 0.8:
 # q* within a factor of 2 of Wong-Parker (2006), q* = 3.97 (theta -
 # 0.0495)^1.5 = 2.58 (a factor of 2 is the scatter of the flume data
 # behind the law, Wong & Parker 2006 Fig. 3), the grains carrying rho g S h
 # within 10 %. Negative control: the laminar run at theta 0.8 above must
 # fail the same check (measured 0.547 = 0.21 of Wong-Parker).
-./Allrun -size small -tag turbulent -theta "$thetaHigh" -endTime $endTime \
+./Allrun -preset kSized -size small -tag turbulent -theta "$thetaHigh" -endTime $endTime \
     > log.Allrun.turbulent 2>&1 \
     || { tail -20 log.Allrun.turbulent; fail "Allrun, turbulent (log.Allrun.turbulent)"; }
 cat turbulent.theta.$thetaHigh/log.bedloadAnalysis
@@ -261,13 +268,13 @@ echo "ok: turbulent q* $qT within a factor of 2 of Wong-Parker $wp; laminar $qHi
 # 2.7 and 3.0 in the tutorial's channel at theta 0.3 and 0.4. Control: a
 # build that ignores the size gives the k-sized run's draws and sizes, so
 # the same q* (ratio 1), and fails (run by hand: tests/README.md).
-./Allrun -size small -tag shearSize -eddyLifetime turnover -fluctuationSize shearStress \
+./Allrun -preset kSized -size small -tag shearSize -eddyLifetime turnover -fluctuationSize shearStress \
     -theta "$thetaFluct" -endTime $endTime > log.Allrun.shearSize 2>&1 \
     || { tail -20 log.Allrun.shearSize; fail "Allrun -fluctuationSize shearStress (log.Allrun.shearSize)"; }
 cat shearSize.theta.$thetaFluct/log.bedloadAnalysis
 grep -q "sized by the local Reynolds shear stress" shearSize.theta.$thetaFluct/log.interDemFoam \
     || fail "the shearStress run did not report its size model"
-./Allrun -size small -tag kSize -eddyLifetime turnover -theta "$thetaFluct" -endTime $endTime \
+./Allrun -preset kSized -size small -tag kSize -eddyLifetime turnover -theta "$thetaFluct" -endTime $endTime \
     > log.Allrun.kSize 2>&1 \
     || { tail -20 log.Allrun.kSize; fail "Allrun -eddyLifetime turnover (log.Allrun.kSize)"; }
 cat kSize.theta.$thetaFluct/log.bedloadAnalysis
@@ -298,7 +305,7 @@ echo "ok: size shearStress q* $qS (halves $s1, $s2) against $qK sized by k"
 # which grainTop falls back to the average repeats the shearSize run (the
 # same draws and forces), a ratio of 1, and fails (run by hand: q* 6.85e-3
 # with both).
-./Allrun -size small -tag grainTop -eddyLifetime turnover -fluctuationSize shearStress \
+./Allrun -preset kSized -size small -tag grainTop -eddyLifetime turnover -fluctuationSize shearStress \
     -fluidVelocity grainTop -theta "$thetaFluct" -endTime $endTime > log.Allrun.grainTop 2>&1 \
     || { tail -20 log.Allrun.grainTop; fail "Allrun -fluidVelocity grainTop (log.Allrun.grainTop)"; }
 cat grainTop.theta.$thetaFluct/log.bedloadAnalysis
@@ -330,7 +337,7 @@ echo "ok: grainTop q* $qG (halves $g1, $g2, grains carry $gRatio of tau_b) again
 # 0.005), below the weight that would lift the whole layer off. Control:
 # C_L 0 (-lift 0) repeats the grainTop run to every digit (q* 0.0292844,
 # run by hand), a ratio of 1 and a vertical force of 0.005, and fails both.
-./Allrun -size small -tag lift -eddyLifetime turnover -fluctuationSize shearStress \
+./Allrun -preset kSized -size small -tag lift -eddyLifetime turnover -fluctuationSize shearStress \
     -fluidVelocity grainTop -lift 0.2 -theta "$thetaFluct" -endTime $endTime > log.Allrun.lift 2>&1 \
     || { tail -20 log.Allrun.lift; fail "Allrun -lift 0.2 (log.Allrun.lift)"; }
 cat lift.theta.$thetaFluct/log.bedloadAnalysis
@@ -370,7 +377,7 @@ echo "ok: lift q* $qL (halves $b1, $b2, grains carry $lRatio of tau_b) against $
 for v in above topAt
 do
     case $v in above) at=cellAbove ;; topAt) at=grainTop ;; esac
-    ./Allrun -size small -tag $v -eddyLifetime turnover -fluctuationSize shearStress \
+    ./Allrun -preset kSized -size small -tag $v -eddyLifetime turnover -fluctuationSize shearStress \
         -fluidVelocity grainTop -fluctuationAt $at -lift 0.2 -theta "$thetaAbove" -endTime $endTime \
         > log.Allrun.$v 2>&1 \
         || { tail -20 log.Allrun.$v; fail "Allrun -fluctuationAt $at (log.Allrun.$v)"; }
@@ -395,26 +402,39 @@ check "cellAbove: q* over the grainTop-sampled run's" "$qA" "v >= 5*$qTopAt" \
     "theta $thetaAbove: q* $qA with sampledAt cellAbove, $qTopAt with grainTop: expected at least 5 times"
 echo "ok: cellAbove q* $qA (halves $a1, $a2) against $qTopAt (halves $t1, $t2) sampled at the grains' tops"
 
-# The best of the tutorial's options (tAboveVs2Spill: the cellAbove run's
-# options with a virtual sphere of 2 d and voidFractionFloor spill), theta
-# 0.3: q* within a factor of 2 of Wong-Parker (2006), 3.97 (0.3 -
-# 0.0495)^1.5 = 0.498 (a factor of 2 is the scatter of the flume data
-# behind the law, Wong & Parker 2006 Fig. 3), the grains carrying rho g S h
-# within 10 %, voidFractionFloor spill set in the run's couplingProperties
-# and no cell clipped at the floor (in this short run no cell reaches the
-# cap either; the tutorial's 20 s runs spill 245-4637 cell-steps).
+# The tutorial's default model (-preset cellAbove, as `./Allrun` ships it:
+# the cellAbove run's options with a virtual sphere of 2 d and
+# voidFractionFloor spill, the options of results/bedload.dat), theta 0.3,
+# run with no model option given: the run's couplingProperties must hold
+# that model (virtual sphere of 2 d, spill, grainTop, WibergSmithLift, eddies
+# sampled in the cell above, sized by the shear stress, living k/epsilon),
+# q* within a factor of 2 of Wong-Parker (2006), 3.97 (0.3 - 0.0495)^1.5 =
+# 0.498 (Meyer-Peter & Mueller's own flume data refitted; a factor of 2 is
+# their scatter about it, Wong & Parker 2006 Fig. 3; MPM's 8 (theta -
+# 0.047)^1.5 = 1.02 lies a factor 2.05 above, and this model at 0.40-0.42
+# of it), the grains carrying rho g S h within 10 %, and no cell clipped at
+# the floor (in this short run no cell reaches the cap either; the
+# tutorial's 20 s runs spill 245-4637 cell-steps).
 # Measured 0.407 (0.82 of Wong-Parker) here, 0.430 in the tutorial's
 # channel (docs/erosion.md).
 # Negative control: the laminar run at theta 0.3 above (controlRun laminar)
 # must fail the same check.
-./Allrun -size small -tag vs2Spill -eddyLifetime turnover -fluctuationSize shearStress \
-    -fluidVelocity grainTop -fluctuationAt cellAbove -lift 0.2 -voidFraction "virtualSphere 2" \
-    -voidFractionFloor spill -theta "$thetaFluct" -endTime $endTime > log.Allrun.vs2Spill 2>&1 \
-    || { tail -20 log.Allrun.vs2Spill; fail "Allrun -voidFraction \"virtualSphere 2\" -voidFractionFloor spill (log.Allrun.vs2Spill)"; }
+./Allrun -size small -tag vs2Spill -theta "$thetaFluct" -endTime $endTime > log.Allrun.vs2Spill 2>&1 \
+    || { tail -20 log.Allrun.vs2Spill; fail "Allrun, the default model (log.Allrun.vs2Spill)"; }
 cat vs2Spill.theta.$thetaFluct/log.bedloadAnalysis
 vsLog=vs2Spill.theta.$thetaFluct/log.interDemFoam
-floorSetting=$(foamDictionary -entry voidFractionFloor -value vs2Spill.theta.$thetaFluct/constant/couplingProperties 2>/dev/null)
-[ "$floorSetting" = spill ] || fail "the vs2Spill run's couplingProperties has voidFractionFloor '$floorSetting', expected spill"
+# entry expected: the default model's settings in the run's couplingProperties
+for setting in "voidFractionFloor=spill" "virtualSphereCoeffs/diameterRatio=2" \
+    "fluidVelocity=grainTop" "forces=(DiFeliceDrag pressureGradient WibergSmithLift)" \
+    "WibergSmithLiftCoeffs/liftCoefficient=0.2" "velocityFluctuation/source=turbulence" \
+    "velocityFluctuation/sampledAt=cellAbove" "velocityFluctuation/size=shearStress" \
+    "velocityFluctuation/eddyLifetime=turnover"
+do
+    entry=${setting%%=*} expected=${setting#*=}
+    got=$(foamDictionary -entry "$entry" -value vs2Spill.theta.$thetaFluct/constant/couplingProperties 2>/dev/null | tr -s ' \n' ' ' | sed 's/ *$//; s/( /(/; s/ )/)/')
+    [ "$got" = "$expected" ] \
+        || fail "the default model's run (vs2Spill) has $entry '$got' in its couplingProperties, expected '$expected'"
+done
 if grep -q "^Warning: voidfraction floor" $vsLog
 then
     fail "the vs2Spill run clipped eps at its floor: the spill left cells over the cap"
@@ -428,7 +448,7 @@ qLam=$(value laminar.theta.$thetaFluct qstar)
 requireNumber "laminar control: q*" "$qLam"
 awk -v v="$qLam" -v w="$wpV" 'BEGIN { exit !(v > 0.5*w && v < 2*w) }' \
     && fail "negative control: the laminar q* $qLam at theta $thetaFluct is within a factor of 2 of Wong-Parker's $wpV too: the check cannot tell them apart"
-echo "ok: sphere of 2 d with spill q* $qV within a factor of 2 of Wong-Parker $wpV (grains carry $vRatio of tau_b); laminar $qLam is not"
+echo "ok: the default model (sphere of 2 d with spill) q* $qV within a factor of 2 of Wong-Parker $wpV (grains carry $vRatio of tau_b); laminar $qLam is not"
 
 # a mobilised start (Allrun -mobilise "0.8 2", laminar, theta 0.2): the bed
 # driven at theta 0.8 for 2 s, then at 0.2 for 6 s, averaged over 5-8 s.

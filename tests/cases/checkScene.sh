@@ -16,9 +16,11 @@
 #     (deltaT 0.5 s = 3.6 tau_p): exit 1 naming the coupling step;
 #   - the bed's expected Shields number (-shields) against the measured
 #     onsets of bedload (etc/sceneMaps/bedloadOnset.dat: laminar 0.4-0.5,
-#     k-omega SST 0.3-0.4, docs/erosion.md): at 0.35 this laminar case gets
-#     a WARN that a turbulent run would move the bed and a laminar one not
-#     (exit 0); control: at 0.1 "laminar flow is enough", no such WARN;
+#     k-omega SST 0.07-0.08 with the bedload tutorial's default grain-side
+#     model, docs/erosion.md): at 0.35 this laminar case gets a WARN that a
+#     turbulent run would move the bed and a laminar one not, naming that
+#     model's settings (exit 0); control: at 0.05 "laminar flow is
+#     enough", no such WARN;
 #   - bad input: a missing DEM script: a clear error naming the script and
 #     the keyword, no crash.
 # Reference: the measured maps checkDemScene reads (the cell-size study's
@@ -85,16 +87,18 @@ setEntry constant/couplingProperties demDrag implicit
 sed -i 's/couple\/cfd\/force /couple\/cfd\/force\/implicit /; s/couple\/cfd\/force$/couple\/cfd\/force\/implicit/' DEM/in.liggghts
 
 # 4. the bed's Shields number against the measured onsets of bedload
-#    (etc/sceneMaps/bedloadOnset.dat: laminar 0.4-0.5, k-omega SST 0.3-0.4):
-#    this laminar case at 0.35 moves no grain where a turbulent one would
-#    (WARN, exit 0); control: at 0.1 no model moves the bed, laminar is
-#    enough (no such warning)
+#    (etc/sceneMaps/bedloadOnset.dat: laminar 0.4-0.5, k-omega SST 0.07-0.08
+#    with the bedload tutorial's default grain-side model): this laminar
+#    case at 0.35 moves no grain where a turbulent one would (WARN naming
+#    that model's settings, exit 0); control: at 0.05 no model moves the
+#    bed, laminar is enough (no such warning)
 extra=(-shields 0.35)
-check_scene shieldsBetween 0 "WARN  the bed's Shields number 0.35 lies between the turbulent onset of bedload (0.3-0.4, kOmegaSST) and the laminar one (0.4-0.5)"
-extra=(-shields 0.1)
-check_scene shieldsLow 0 "laminar flow is enough: no measured model moves a bed at theta 0.1"
+check_scene shieldsBetween 0 "WARN  the bed's Shields number 0.35 lies between the turbulent onset of bedload (0.07-0.08, kOmegaSST) and the laminar one (0.4-0.5)" \
+    "sampledAt cellAbove; }, fluidVelocity grainTop"
+extra=(-shields 0.05)
+check_scene shieldsLow 0 "laminar flow is enough: no measured model moves a bed at theta 0.05"
 ! grep -q "WARN  the bed's Shields number" log.shieldsLow \
-    || fail "shieldsLow: warned about the bed's Shields number at 0.1"
+    || fail "shieldsLow: warned about the bed's Shields number at 0.05"
 extra=()
 
 # 5. bad input: the DEM script is missing

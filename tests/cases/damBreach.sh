@@ -33,6 +33,9 @@
 #     on the six pairs of words; two made-up samples of four findings count
 #     1 held in both, negative control a count of sample a only), and the matrix with --second writes both
 #     samples' matrix and phases and holds nothing with seven runs missing;
+#     the findings-against-cost chart reads made-up matrices right (each
+#     sample's count held and the CPU time of its eight runs; a matrix with
+#     a run missing skipped; negative control: sample a's count given to b);
 #   - -parallel 2 writes the DEM grid bin/demGrid chooses from the dam's
 #     grains (-demGrid auto), the serial run LIGGGHTS's "* * *";
 #   - -eddyLifetime turnover (with -turbulence kOmegaSST -fluctuation
@@ -255,6 +258,51 @@ EOF
     [ -z "$wrong" ] || fail "two samples judged wrongly: $(echo $wrong)"
 }
 
+# findingsCostCheck <dir>: the findings-against-cost chart (coarseness.py
+# findings_cost) reads each sample's count of findings held and sums the
+# CPU time of its eight runs: made-up matrices, two samples (a 5 of 12,
+# b 7, CPU 8 x 100 s and 8 x 200 s) and one (4 of 12, 8 x 50 s); a matrix
+# with runs missing is skipped
+findingsCostCheck()
+{
+    local wrong
+    wrong=$(/usr/bin/python3 - "$1" <<'EOF'
+import os, sys, tempfile
+sys.path.insert(0, sys.argv[1])
+from damBreach import coarseness as m
+head = "# The seed's findings, checked on the small-scale runs\n"
+def matrix(d, suffix, cpu):
+    with open(os.path.join(d, 'matrix.small%s.dat' % suffix), 'w') as f:
+        f.write('# scenario ... cpu_s\n')
+        for sc in ('C1', 'C2', 'C3', 'C4', 'F1', 'F2', 'F3', 'F4'):
+            f.write('%s 0.01 C 0.3 0.2 20.0 0.8 10 %g %g\n' % (sc, cpu, cpu))
+with tempfile.TemporaryDirectory() as scratch:
+    two, one, part = (os.path.join(scratch, n) for n in ('two', 'one', 'part'))
+    for d in (two, one, part):
+        os.mkdir(d)
+    open(os.path.join(two, 'findings.small.txt'), 'w').write(
+        head + 'P1 holds: c\n# in sample a 5 of 12 hold, in sample b 7\n'
+        '# 4 of 12 hold in both samples\n')
+    matrix(two, '', 100)
+    matrix(two, '.b', 200)
+    open(os.path.join(one, 'findings.small.txt'), 'w').write(
+        head + 'P1 holds: c\n# 4 of 12 hold\n')
+    matrix(one, '', 50)
+    open(os.path.join(part, 'findings.small.txt'), 'w').write(
+        head.rstrip('\n') + '; missing runs: F1\n# 0 of 12 hold: 1 of the '
+        'eight runs missing (F1); 3 hold on the runs present\n')
+    got = {d: m.matrix_findings(d, 'small') for d in (two, one, part)}
+    expected = {two: [('a', 5, 12, 800.0), ('b', 7, 12, 1600.0)],
+                one: [('a', 4, 12, 400.0)], part: None}
+    for d in (two, one, part):
+        if got[d] != expected[d]:
+            print('%s: %s, expected %s' % (os.path.basename(d), got[d],
+                                           expected[d]))
+EOF
+) || fail "the findings-cost check could not run: $wrong"
+    [ -z "$wrong" ] || fail "findings against cost read wrongly: $(echo $wrong)"
+}
+
 # twoSampleChecks: the matrix with a second sample (this run again) writes
 # both samples' matrix and phases, and with seven runs missing still holds
 # no finding
@@ -283,6 +331,10 @@ mustFail verdictCheck "$PWD/countOneSample" "the count of sample a only" \
 breakAnalysis bothSamples matrix 's/^    if ok_b is None or ok_a == ok_b:$/    if True:/' '    if True:'
 mustFail verdictCheck "$PWD/bothSamples" "one sample enough to hold" \
     "two samples judged wrongly"
+breakAnalysis costSampleA coarseness "s/^            held = {'a': int(w\[4\]), 'b': int(w\[-1\])}\$/            held = {'a': int(w[4]), 'b': int(w[4])}/" \
+    "            held = {'a': int(w[4]), 'b': int(w[4])}"
+mustFail findingsCostCheck "$PWD/costSampleA" "sample a's count given to b" \
+    "findings against cost read wrongly"
 breakAnalysis ignoreMissing matrix 's/^\(    missing = \).*/\1[]/' '    missing = []'
 mustFail matrixChecks "$PWD/ignoreMissing" "the missing runs ignored" \
     "findings count reads"
@@ -299,6 +351,7 @@ mustFail rateShapeCheck "$PWD/failureFades" "a complete failure judged by fading
     "rate_peaks judges wrongly"
 matrixChecks "$PWD"
 verdictCheck "$PWD"
+findingsCostCheck "$PWD"
 twoSampleChecks
 rankingCheck "$PWD"
 rateShapeCheck "$PWD"

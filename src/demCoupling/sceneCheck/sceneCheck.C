@@ -539,13 +539,23 @@ void Foam::demCoupling::sceneCheck::checkBedload(const scalar shields)
           + fig(lamBelow) + "-" + fig(lamOnset) + "): a laminar run moves"
             " no grain where a turbulent one does; use simulationType RAS,"
             " RASModel " + turbModel + " (constant/turbulenceProperties)"
-            " and velocityFluctuation { source turbulence; }"
+            " with the grain-side model that onset was measured with, the"
+            " bedload tutorial's default (constant/couplingProperties:"
+            " velocityFluctuation { source turbulence; eddyLifetime"
+            " turnover; size shearStress; sampledAt cellAbove; },"
+            " fluidVelocity grainTop, WibergSmithLift with liftCoefficient"
+            " 0.2, virtualSphere diameterRatio 2, voidFractionFloor spill;"
+            " docs/erosion.md)"
         );
     }
     else if (shields <= lamBelow)
     {
         Info<< "    -> a turbulence model is needed to move this bed (this"
-            << " case has one)" << endl;
+            << " case has one; its onset was measured with the bedload"
+            << " tutorial's grain-side model: eddies of the cell above,"
+            << " the velocity at the grain's top, bed lift, a virtual sphere"
+            << " of 2 d, the floor spilled; with other grain-side options"
+            << " it lies higher, docs/erosion.md)" << endl;
     }
     else
     {

@@ -25,6 +25,16 @@
     damBreachAnalysis.py demStep DIR SCALE    C2 and F2 at each DEM step
                                               against CPU time (from DIR's
                                               coarseness.SCALE.dat)
+    damBreachAnalysis.py findingsCost DIR SCALE LABEL=FOLDER...
+                                              the seed's findings held
+                                              against the CPU time of the
+                                              whole matrix, one point per
+                                              model (LABEL, one word; its
+                                              results FOLDER with
+                                              findings.SCALE.txt and
+                                              matrix.SCALE[.b].dat) and
+                                              sample; a matrix with runs
+                                              missing is skipped
     damBreachAnalysis.py shields DIR SCALE CASE...
                                               the Shields number on the
                                               downstream face during

@@ -48,6 +48,8 @@ COMMANDS = {
     'matrix': (3, lambda a: matrix.main(a[0], a[1], a[2:])),
     'coarseness': (3, lambda a: coarseness.coarseness(a[0], a[1], a[2:])),
     'demStep': (2, lambda a: coarseness.dem_step(a[0], a[1])),
+    'findingsCost': (3, lambda a: coarseness.findings_cost(a[0], a[1],
+                                                           a[2:])),
     'shields': (3, lambda a: shields.main(a[0], a[1], a[2:])),
     'deposit': (1, deposit_command),
     'compare': (2, lambda a: compare.compare(a[0], a[1:])),

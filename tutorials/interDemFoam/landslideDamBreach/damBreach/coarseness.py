@@ -6,6 +6,7 @@ coarseness DIR SCALE CASE...): residual height and overtopping time of
 each variant of C2 and F2 against the CPU time of its run,
 DIR/coarseness.<scale>.dat and .png."""
 import os
+import sys
 
 from .figures import pyplot
 from .runs import cpu_time
@@ -243,4 +244,94 @@ def dem_step(out, scale):
     png = os.path.join(out, 'demStep.%s.png' % scale)
     fig.savefig(png, dpi=110)
     print('Written: %s' % png)
+    return 0
+
+
+def matrix_findings(directory, scale):
+    """The findings held in each sample of a matrix (results/<tag>/
+    findings.<scale>.txt: '# N of 12 hold' for one sample, '# in sample a
+    N of 12 hold, in sample b M' for two) and the CPU time of its eight
+    runs (matrix.<scale>.dat, .b.dat: cpu_s): [(sample, held, of, cpu_s)],
+    None where runs are missing (the matrix is not whole)."""
+    findings = os.path.join(directory, 'findings.%s.txt' % scale)
+    text = open(findings).read()
+    if 'missing runs' in text.split('\n', 1)[0]:
+        return None
+    held = {}
+    for line in text.splitlines():
+        w = line.split()
+        if line.startswith('# in sample a '):
+            held = {'a': int(w[4]), 'b': int(w[-1])}
+            total = int(w[6])
+        elif len(w) >= 5 and line.startswith('# ') and w[2] == 'of' \
+                and w[4] == 'hold' and not held:
+            held = {'a': int(w[1])}
+            total = int(w[3])
+    if not held:
+        sys.exit('findingsCost: no count of the findings held in %s'
+                 % findings)
+    out = []
+    for sample, suffix in (('a', ''), ('b', '.b')):
+        if sample not in held:
+            continue
+        path = os.path.join(directory, 'matrix.%s%s.dat' % (scale, suffix))
+        rows = [l.split() for l in open(path)
+                if l.strip() and not l.startswith('#')]
+        if len(rows) != 8:
+            sys.exit('findingsCost: %s has %d scenarios, not the eight'
+                     % (path, len(rows)))
+        out.append((sample, held[sample], total,
+                    sum(float(r[-1]) for r in rows)))
+    return out
+
+
+def findings_cost(out, scale, entries):
+    """The findings held against the CPU time of the whole matrix, one
+    point per sample, for each model's matrix (entries: label=results
+    folder): findingsCost.<scale>.dat and .png in out."""
+    rows = []
+    for entry in entries:
+        if '=' not in entry:
+            sys.exit('findingsCost: %s is not label=folder' % entry)
+        label, directory = entry.split('=', 1)
+        if not label or len(label.split()) != 1:
+            sys.exit('findingsCost: the label of %s must be one word'
+                     % entry)
+        points = matrix_findings(directory, scale)
+        if points is None:
+            print('findingsCost: %s skipped: its matrix misses runs (%s)'
+                  % (label, directory))
+            continue
+        rows += [(label, s, h, n, c, directory) for s, h, n, c in points]
+    if not rows:
+        sys.exit('findingsCost: no whole matrix among %s' % ' '.join(entries))
+    path = os.path.join(out, 'findingsCost.%s.dat' % scale)
+    with open(path, 'w') as f:
+        f.write('# The seed\'s findings held against the CPU time of the '
+                'eight %s-scale runs, per model and sample (damBreachAnalysis'
+                '.py findingsCost)\n# model sample held of cpu_s  folder\n'
+                % scale)
+        for r in rows:
+            f.write('%-12s %s %2d %2d %6.0f  %s\n' % r)
+    print(open(path).read())
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    labels = []
+    for label, sample, held, total, cpu, _ in rows:
+        marker = 'o' if sample == 'a' else 's'
+        ax.plot(cpu/3600, held, marker, ms=8, color='tab:blue')
+        labels.append(('%s (%s)' % (label, sample), cpu/3600, held, 8))
+    ax.margins(x=0.2)
+    ax.set_xlim(left=0)
+    ax.axhline(9, color='0.5', ls='--', lw=1)
+    ax.text(0, 9.1, ' goal: 9 of 12 in both samples', fontsize=8,
+            color='0.3')
+    ax.set(xlabel='CPU time of the eight runs [h]',
+           ylabel='findings held (of 12)', ylim=(0, 12.5),
+           title='The seed\'s findings against the cost of the matrix '
+                 '(o sample a, s sample b)')
+    fig.tight_layout()
+    label_points(ax, labels)
+    fig.savefig(os.path.join(out, 'findingsCost.%s.png' % scale), dpi=110)
+    print('Written: %s/findingsCost.%s.dat, .png' % (out, scale))
     return 0
