@@ -5,6 +5,7 @@
 coarseness DIR SCALE CASE...): residual height and overtopping time of
 each variant of C2 and F2 against the CPU time of its run,
 DIR/coarseness.<scale>.dat and .png."""
+import math
 import os
 import sys
 
@@ -280,8 +281,11 @@ def matrix_findings(directory, scale):
         if len(rows) != 8:
             sys.exit('findingsCost: %s has %d scenarios, not the eight'
                      % (path, len(rows)))
-        out.append((sample, held[sample], total,
-                    sum(float(r[-1]) for r in rows)))
+        cpu = sum(float(r[-1]) for r in rows)
+        if math.isnan(cpu):
+            sys.exit('findingsCost: %s has a run without its CPU time'
+                     % path)
+        out.append((sample, held[sample], total, cpu))
     return out
 
 
