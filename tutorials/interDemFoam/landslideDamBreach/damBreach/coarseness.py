@@ -45,6 +45,8 @@ VARIANTS = {
     'Fdem45': 'DEM step 45 % of the 10 mm grains\' Rayleigh time (1.26e-4 s), to 80 s',
     'turb': 'k-omega SST with the fluid fraction, fluctuations from k (the turbulent matrix, sample a)',
     'turb.b': 'k-omega SST, fluctuations from k, every step 10 % shorter (sample b)',
+    'vs2spill': 'the bedload tutorial\'s default model: k-omega SST, eddies of the cell above, grain top, lift 0.2, sphere 2 d, floor spilled (sample a)',
+    'vs2spill.b': 'the bedload default model, every step 10 % shorter (sample b)',
 }
 
 
