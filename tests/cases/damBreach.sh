@@ -38,6 +38,12 @@
 #     a run missing skipped; negative control: sample a's count given to b);
 #   - -parallel 2 writes the DEM grid bin/demGrid chooses from the dam's
 #     grains (-demGrid auto), the serial run LIGGGHTS's "* * *";
+#   - the mass budget (damBreachAnalysis.py budget) starts from the poured
+#     dam: its first row puts 36.38 kg on the dam's footprint, the mass
+#     results/grading.small.dat gives the C dam (measured from the grains
+#     the build wrote, not from the dumps), within 0.01 kg, and none in the
+#     deposit; negative control: the F dam's 37.68 kg from the same file is
+#     not matched;
 #   - -eddyLifetime turnover (with -turbulence kOmegaSST -fluctuation
 #     turbulence) writes velocityFluctuation { source turbulence;
 #     eddyLifetime turnover; } into the case (the default run has no
@@ -423,6 +429,26 @@ fluctuationOf() { foamDictionary -entry "velocityFluctuation/$2" -value "$1/cons
     && fail "-eddyLifetime turnover without -fluctuation turbulence ran (log.Allrun.turnoverLam)"
 grep -q "^Allrun: -eddyLifetime is how long a grain keeps an eddy" log.Allrun.turnoverLam \
     || fail "-eddyLifetime without -fluctuation turbulence did not stop with the option named (log.Allrun.turnoverLam)"
+
+# the mass budget's first row against the dam's mass in the grading file
+damMassOf() { sed -n "s/^# $1: [0-9]* grains, \([0-9.]*\) kg.*/\1/p" results/grading.small.dat; }
+/usr/bin/python3 damBreachAnalysis.py budget "$case" > log.budget 2>&1 \
+    || { cat log.budget; fail "damBreachAnalysis.py budget failed (log.budget)"; }
+cat log.budget
+firstRow=$(awk -v c="$case" '$1 == c && $2 + 0 == 0 { print $3, $4; exit }' log.budget)
+read -r footprint0 deposit0 <<< "$firstRow"
+requireNumber "budget: footprint mass at t = 0" "$footprint0"
+requireNumber "budget: deposit mass at t = 0" "$deposit0"
+for m in C F
+do
+    requireNumber "the $m dam's mass in results/grading.small.dat" "$(damMassOf $m)"
+done
+budgetMatches() { /usr/bin/python3 -c "import sys; sys.exit(0 if abs($footprint0 - $1) <= 0.01 and $deposit0 == 0 else 1)"; }
+budgetMatches "$(damMassOf C)" \
+    || fail "budget: $footprint0 kg on the footprint and $deposit0 kg in the deposit at t = 0, the C dam is $(damMassOf C) kg"
+budgetMatches "$(damMassOf F)" \
+    && fail "budget: the footprint's $footprint0 kg also matches the F dam's $(damMassOf F) kg (negative control)"
+echo "budget: $footprint0 kg on the footprint at t = 0 (the C dam $(damMassOf C) kg)"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"

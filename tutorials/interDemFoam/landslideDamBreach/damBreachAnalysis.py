@@ -45,6 +45,13 @@
                                               of the poured dam's toe (the
                                               deposit) and how many of those
                                               move, every 20 s
+    damBreachAnalysis.py budget CASE... [--every 20]
+                                              where the dam's mass is (kg):
+                                              on its footprint, in the
+                                              deposit downstream, out of the
+                                              flume; per size class, the
+                                              share of its mass off the
+                                              footprint, every 20 s
 
 Reads the DEM dumps CASE/post/particles.<step>.txt and contacts.<step>.txt
 (DEM/in.dam writes them; step x demDt is the time, demDt the DEM step of

@@ -41,6 +41,14 @@ def deposit_command(args):
     deposit.deposit(a.cases, a.every)
 
 
+def budget_command(args):
+    ap = argparse.ArgumentParser(prog='damBreachAnalysis.py budget')
+    ap.add_argument('cases', nargs='+')
+    ap.add_argument('--every', type=float, default=20.0)
+    a = ap.parse_args(args)
+    deposit.budget(a.cases, a.every)
+
+
 # command: (the fewest arguments after it, what runs it)
 COMMANDS = {
     'grading': (1, grading_command),
@@ -52,6 +60,7 @@ COMMANDS = {
                                                            a[2:])),
     'shields': (3, lambda a: shields.main(a[0], a[1], a[2:])),
     'deposit': (1, deposit_command),
+    'budget': (1, budget_command),
     'compare': (2, lambda a: compare.compare(a[0], a[1:])),
 }
 

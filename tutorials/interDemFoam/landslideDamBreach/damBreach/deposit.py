@@ -35,3 +35,44 @@ def deposit(cases, every):
             print('%-22s %7.1f %8d %11d %8d %10d'
                   % (case, t, len(p), down.sum(), (down & moving).sum(),
                      (~down & moving).sum()))
+
+
+def budget(cases, every):
+    """Per case, every `every` seconds of its dumps (and its last): where
+    the dam's mass is, in kg: on the poured dam's footprint (x up to its
+    downstream toe), downstream of it on the bed (the deposit) and out of
+    the flume (the first dump's mass less the flume's); then, per size
+    class (diameter, mm), the share of the class's mass that has left the
+    footprint (deposit and out). Which grains did the breach take, and are
+    they still in the flume?"""
+    toe = dam_downstream_toe()
+    print('# footprint: x <= %.3f m (the poured dam); deposit: x > %.3f m; '
+          'out: left the flume; masses in kg; per class: share of its mass '
+          'off the footprint' % (toe, toe))
+    for case in cases:
+        dumps = dump_files(case, 'particles')
+        if not dumps:
+            print('%-22s no particle dumps in %s/post' % (case, case))
+            continue
+        first = read_dump(dumps[0][1])
+        d_first = np.round(2000*first[:, 1], 1)
+        classes = np.unique(d_first)
+        m0 = np.array([first[d_first == d, 2].sum() for d in classes])
+        print('%-22s %7s %9s %8s %7s  %s' % (
+            'case', 't [s]', 'footprint', 'deposit', 'out',
+            ' '.join('%6.0fmm' % d for d in classes)))
+        for i, (t, f) in enumerate(dumps):
+            last = i == len(dumps) - 1
+            if i and not last and abs(t/every - round(t/every)) > 1e-6:
+                continue
+            p = read_dump(f)
+            if p.size == 0:
+                p = np.zeros((0, 9))
+            d = np.round(2000*p[:, 1], 1)
+            on = p[:, 3] <= toe
+            foot, dep = p[on, 2].sum(), p[~on, 2].sum()
+            off = [1 - p[on & (d == c), 2].sum()/m for c, m in
+                   zip(classes, m0)]
+            print('%-22s %7.1f %9.2f %8.2f %7.2f  %s' % (
+                case, t, foot, dep, round(m0.sum() - foot - dep, 2) + 0.0,
+                ' '.join('%8.3f' % s for s in off)))
