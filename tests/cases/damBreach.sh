@@ -44,6 +44,10 @@
 #     the build wrote, not from the dumps), within 0.01 kg, and none in the
 #     deposit; negative control: the F dam's 37.68 kg from the same file is
 #     not matched;
+#   - equalTime on two made-up runs (A: H = 0.3 - 0.001 t m over 100 s; B
+#     ends at 50 s) gives A's mean height over [45, 50] s, 0.2525 m, and its
+#     own residual over [90, 100] s, 0.205 m; negative control: a copy that
+#     takes each run at its own end fails;
 #   - -eddyLifetime turnover (with -turbulence kOmegaSST -fluctuation
 #     turbulence) writes velocityFluctuation { source turbulence;
 #     eddyLifetime turnover; } into the case (the default run has no
@@ -449,6 +453,34 @@ budgetMatches "$(damMassOf C)" \
 budgetMatches "$(damMassOf F)" \
     && fail "budget: the footprint's $footprint0 kg also matches the F dam's $(damMassOf F) kg (negative control)"
 echo "budget: $footprint0 kg on the footprint at t = 0 (the C dam $(damMassOf C) kg)"
+
+# equalTime on two made-up runs: A's H falls linearly, 0.3 - 0.001 t m over
+# 0-100 s, B's stays 0.2 m and ends at 50 s; at T = 50 s A's mean height
+# over [45, 50] s is 0.2525 m, its own residual (over [90, 100] s) 0.205 m
+mkdir -p equalTime/A equalTime/B
+/usr/bin/python3 -c "
+import numpy as np
+t = np.arange(0, 100.01, 0.5)
+np.savetxt('equalTime/A/damBreach.dat', np.column_stack([t, 0.3 - 0.001*t, 0*t, 1 + 0*t]))
+t = np.arange(0, 50.01, 0.5)
+np.savetxt('equalTime/B/damBreach.dat', np.column_stack([t, 0.2 + 0*t, 0*t, 1 + 0*t]))"
+equalTimeOf() { /usr/bin/python3 "$1"/damBreachAnalysis.py equalTime equalTime/A equalTime/B 2>&1 \
+    | awk '$1 == "equalTime/A" { print $3, $4 }'; }
+equalTimeChecks()
+{
+    local hT residual
+    read -r hT residual <<< "$(equalTimeOf "$1")"
+    check "equalTime: A at T = 50 s" "$hT" 'v > 0.2524 && v < 0.2526' \
+        "equalTime gave A $hT m at T = 50 s, not 0.2525 m"
+    check "equalTime: A's own residual" "$residual" 'v > 0.2049 && v < 0.2051' \
+        "equalTime gave A's residual $residual m, not 0.205 m"
+}
+equalTimeChecks "$PWD"
+mkdir -p ownEnd/damBreach && cp damBreachAnalysis.py ownEnd/ && cp damBreach/*.py ownEnd/damBreach/
+sed -i 's|window = (t >= 0.9\*end) \& (t <= end)|window = t >= 0.9*t[-1]|' ownEnd/damBreach/compare.py
+grep -q 'window = t >= 0.9\*t\[-1\]' ownEnd/damBreach/compare.py || fail "negative control: the equalTime window not broken"
+mustFail equalTimeChecks "$PWD/ownEnd" "each run at its own end" "not 0.2525 m"
+echo "equalTime: A 0.2525 m at T = 50 s, 0.205 m at its own end"
 
 pass "dam ${H0} m, overtopped at ${over} s, crest lowered ${lost} m after," \
      "largest displacement ${moved} m, water balance ${balance} %"

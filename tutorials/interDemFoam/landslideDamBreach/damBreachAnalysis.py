@@ -45,6 +45,10 @@
                                               of the poured dam's toe (the
                                               deposit) and how many of those
                                               move, every 20 s
+    damBreachAnalysis.py equalTime CASE...     the dam heights of these runs
+                                              at the earliest end among them
+                                              (mean over its last 10 %), and
+                                              each run's own residual height
     damBreachAnalysis.py budget CASE... [--every 20]
                                               where the dam's mass is (kg):
                                               on its footprint, in the

@@ -62,6 +62,7 @@ COMMANDS = {
     'deposit': (1, deposit_command),
     'budget': (1, budget_command),
     'compare': (2, lambda a: compare.compare(a[0], a[1:])),
+    'equalTime': (2, compare.equal_time),
 }
 
 

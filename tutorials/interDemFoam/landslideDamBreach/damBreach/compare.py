@@ -43,3 +43,23 @@ def compare(out, cases):
     with open(out + '.txt', 'w') as f:
         f.write('\n'.join(lines) + '\n')
     print('\n'.join(lines))
+
+
+def equal_time(cases):
+    """The dam heights of several runs at the same time: T, the earliest
+    of their end times, and each run's mean height over the last 10 % of
+    [0, T], as damBreach.summary takes its residual height over the last
+    10 % of its own run. Runs that end at different times (the run length
+    follows the breach, Allrun) compare there as they stood together."""
+    data = [(c, np.loadtxt(os.path.join(c, 'damBreach.dat'))) for c in cases]
+    end = min(d[-1, 0] for _, d in data)
+    print('# T = %g s, the earliest end of these runs; H(T): the mean dam '
+          'height over [%g, %g] s' % (end, 0.9*end, end))
+    print('%-24s %8s %10s %12s' % ('case', 'end [s]', 'H(T) [m]',
+                                   'residual [m]'))
+    for case, d in data:
+        t, h = d[:, 0], d[:, 1]
+        window = (t >= 0.9*end) & (t <= end)
+        tail = t >= 0.9*t[-1]
+        print('%-24s %8.1f %10.4f %12.4f' % (case, t[-1], h[window].mean(),
+                                             h[tail].mean()))
