@@ -33,20 +33,15 @@ def ended_command(args):
                             a.energyTolerance) else 1
 
 
-def deposit_command(args):
-    ap = argparse.ArgumentParser(prog='damBreachAnalysis.py deposit')
-    ap.add_argument('cases', nargs='+')
-    ap.add_argument('--every', type=float, default=20.0)
-    a = ap.parse_args(args)
-    deposit.deposit(a.cases, a.every)
-
-
-def budget_command(args):
-    ap = argparse.ArgumentParser(prog='damBreachAnalysis.py budget')
-    ap.add_argument('cases', nargs='+')
-    ap.add_argument('--every', type=float, default=20.0)
-    a = ap.parse_args(args)
-    deposit.budget(a.cases, a.every)
+def cases_every_command(name, run):
+    """The command `name` (CASE... [--every 20]), running run(cases, every)."""
+    def command(args):
+        ap = argparse.ArgumentParser(prog='damBreachAnalysis.py ' + name)
+        ap.add_argument('cases', nargs='+')
+        ap.add_argument('--every', type=float, default=20.0)
+        a = ap.parse_args(args)
+        run(a.cases, a.every)
+    return command
 
 
 # command: (the fewest arguments after it, what runs it)
@@ -59,8 +54,8 @@ COMMANDS = {
     'findingsCost': (3, lambda a: coarseness.findings_cost(a[0], a[1],
                                                            a[2:])),
     'shields': (3, lambda a: shields.main(a[0], a[1], a[2:])),
-    'deposit': (1, deposit_command),
-    'budget': (1, budget_command),
+    'deposit': (1, cases_every_command('deposit', deposit.deposit)),
+    'budget': (1, cases_every_command('budget', deposit.budget)),
     'compare': (2, lambda a: compare.compare(a[0], a[1:])),
     'equalTime': (2, compare.equal_time),
 }

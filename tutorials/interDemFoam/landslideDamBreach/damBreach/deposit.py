@@ -10,6 +10,16 @@ from .dam import dam_downstream_toe
 from .dumps import REST_SPEED, dump_files, read_dump
 
 
+def dumps_every(case, every):
+    """(t, rows) of the case's particle dumps every `every` seconds, and
+    its last."""
+    dumps = dump_files(case, 'particles')
+    for i, (t, f) in enumerate(dumps):
+        last = i == len(dumps) - 1
+        if last or abs(t/every - round(t/every)) <= 1e-6:
+            yield t, read_dump(f)
+
+
 def deposit(cases, every):
     """Per case, every `every` seconds of its dumps (and its last): grains
     in the flume, grains downstream of the poured dam's toe, and of those
@@ -21,12 +31,7 @@ def deposit(cases, every):
     print('%-22s %7s %8s %11s %8s %10s' % ('case', 't [s]', 'flume',
           'downstream', 'moving', 'dam moving'))
     for case in cases:
-        dumps = dump_files(case, 'particles')
-        for i, (t, f) in enumerate(dumps):
-            last = i == len(dumps) - 1
-            if not last and abs(t/every - round(t/every)) > 1e-6:
-                continue
-            p = read_dump(f)
+        for t, p in dumps_every(case, every):
             if p.size == 0:
                 print('%-22s %7.1f %8d %11d %8d %10d' % (case, t, 0, 0, 0, 0))
                 continue
@@ -61,11 +66,7 @@ def budget(cases, every):
         print('%-22s %7s %9s %8s %7s  %s' % (
             'case', 't [s]', 'footprint', 'deposit', 'out',
             ' '.join('%6.0fmm' % d for d in classes)))
-        for i, (t, f) in enumerate(dumps):
-            last = i == len(dumps) - 1
-            if i and not last and abs(t/every - round(t/every)) > 1e-6:
-                continue
-            p = read_dump(f)
+        for t, p in dumps_every(case, every):
             if p.size == 0:
                 p = np.zeros((0, 9))
             d = np.round(2000*p[:, 1], 1)
