@@ -197,6 +197,13 @@ set_tests_properties(case.quietBed PROPERTIES LABELS "case;coupled;forces" TIMEO
 add_test(case.bedload "bash" "cases/bedload.sh")
 set_tests_properties(case.bedload PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 600)
 
+# A graded bed in the bedload channel (issue 48, which grains move first):
+# bad -grading input named, the poured classes' mass shares, theta on the
+# geometric mean diameter, the classes' fluxes against LIGGGHTS's own total
+# (negative control: a broken grain volume), Wilcock & Crowe's equations
+add_test(case.bedloadGraded "bash" "cases/bedloadGraded.sh")
+set_tests_properties(case.bedloadGraded PROPERTIES LABELS "case;coupled;erosion" TIMEOUT 300)
+
 # The scene check before a run (checkDemScene): a measured failure region
 # (centre at dx = d), a safe scene, a coupling step in explicit drag's
 # blow-up region, a missing DEM script

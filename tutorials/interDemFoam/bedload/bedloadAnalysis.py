@@ -32,6 +32,17 @@
   bedloadAnalysis.py mobileChart <png> <label>=<run prefix> ...
                                             the same against theta for
                                             sweeps (runs <prefix>.theta.*)
+  bedloadAnalysis.py fractions <run> ...    which grains move on a graded
+                                            bed (Allrun -grading): each
+                                            size class's share of the bed,
+                                            of its surface and of the
+                                            flux, against Wilcock & Crowe
+                                            (2003)
+  bedloadAnalysis.py fractionsChart <png> <label>=<run>,<run>... ...
+                                            the fine class's share of the
+                                            flux and the mobility ratio
+                                            against theta, beside Wilcock
+                                            & Crowe's
   bedloadAnalysis.py onsetMap <out> <model>=<table.dat> ...
                                             the measured onsets checkDemScene
                                             reads (etc/sceneMaps/
@@ -63,8 +74,8 @@ import sys
 
 RHO, RHOS, G, D = 1000.0, 2650.0, 9.81, 0.01
 S1 = RHOS/RHO - 1.0
-QREF = math.sqrt(S1*G*D**3)          # m2/s
-TAUREF = (RHOS - RHO)*G*D            # Pa
+QREF = math.sqrt(S1*G*D**3)          # m2/s, for d = D
+TAUREF = (RHOS - RHO)*G*D            # Pa, for d = D
 QMIN = 1e-3                          # sustained-transport threshold on q*
 
 
@@ -90,7 +101,18 @@ def settings(run):
     for k in ('theta', 'forcing', 'depth', 'lx', 'ly'):
         if k not in s:
             sys.exit('%s: no %s in system/caseSettings' % (run, k))
+    # the diameter theta and q* refer to (Allrun -grading: the bed's
+    # geometric mean); runs written before the option: 10 mm grains only
+    s.setdefault('dRef', D)
     return s
+
+
+def monodisperse(run, s):
+    """Stop where a command assumes the default bed of 10 mm grains."""
+    if abs(s['dRef'] - D) > 1e-9:
+        sys.exit('%s: a graded bed (dRef %g m); this command is for the '
+                 'default bed of 10 mm grains (use fractions)'
+                 % (run, s['dRef']))
 
 
 def table(path, ncol):
@@ -172,6 +194,8 @@ def layerMeans(values, nxy):
 def analyse(run):
     s, flux, T, t0, tHalf, win = fluxWindow(run)
     area = s['lx']*s['ly']
+    qRef = math.sqrt(S1*G*s['dRef']**3)
+    tauRef = (RHOS - RHO)*G*s['dRef']
     half1 = [r for r in win if r[0] < tHalf]
     half2 = [r for r in win if r[0] >= tHalf]
     qs = mean([r[1] for r in win])
@@ -180,8 +204,8 @@ def analyse(run):
     blocks = [mean([r[1] for r in win[i*len(win)//nb:(i + 1)*len(win)//nb]])
               for i in range(nb)]
     qsErr = math.sqrt(sum((b - qs)**2 for b in blocks)/(nb*(nb - 1)))
-    q1 = mean([r[1] for r in half1])/QREF
-    q2 = mean([r[1] for r in half2])/QREF
+    q1 = mean([r[1] for r in half1])/qRef
+    q2 = mean([r[1] for r in half2])/qRef
     Fx = mean([r[2] for r in win])
     nMoving = mean([r[4] for r in win])
     tauB = s['forcing']*s['depth']
@@ -192,8 +216,8 @@ def analyse(run):
     U1, U2 = mean([r[1] for r in uw[:n]]), mean([r[1] for r in uw[-n:]])
     out = {
         'theta': s['theta'],
-        'qstar': qs/QREF,
-        'qstarErr': qsErr/QREF,
+        'qstar': qs/qRef,
+        'qstarErr': qsErr/qRef,
         'qstarHalf1': q1,
         'qstarHalf2': q2,
         'transport': int(q1 > QMIN and q2 > QMIN),
@@ -201,7 +225,7 @@ def analyse(run):
         'qstarWongParker': wongParker(s['theta']),
         'tauB': tauB,
         'slope': s['forcing']/(RHO*G),
-        'thetaGrain': Fx/area/TAUREF,
+        'thetaGrain': Fx/area/tauRef,
         'forceRatio': Fx/area/tauB,
         'U': U,
         'Udrift': (U2 - U1)/U if U else float('nan'),
@@ -211,6 +235,7 @@ def analyse(run):
         'windowEnd': T,
         'mobiliseTheta': s.get('mobiliseTheta', 0.0),
         'mobiliseTime': s.get('mobiliseTime', 0.0),
+        'dRef': s['dRef'],
     }
     out['steady'] = int(abs(out['Udrift']) < 0.05
                         and abs(out['forceRatio'] - 1) < 0.1)
@@ -514,6 +539,7 @@ def nearBed(run):
     velocityFluctuation size shearStress (2.30 sqrt(nut du/dz)); the layer
     holding the bed's surface (the lowest with eps > 0.6) marked."""
     st = settings(run)
+    monodisperse(run, st)
     times = [d for d in os.listdir(run)
              if re.fullmatch(r'[0-9.]+', d) and float(d) > 0]
     t = max(times, key=float)
@@ -588,6 +614,7 @@ def mobileRow(run):
     eps > 0.6, averaged over the fields written in the window). None
     where no grain in the dumps is that fast."""
     s, flux, T, t0, tHalf, win = fluxWindow(run)
+    monodisperse(run, s)
     area = s['lx']*s['ly']
     vx = []
     nDumps = 0
@@ -701,6 +728,194 @@ def mobileChart(outPng, entries):
     print('wrote %s' % outPng)
 
 
+def wilcockCrowe(tau, classes):
+    """Wilcock & Crowe (2003, J. Hydraul. Eng. 129(2), 120-128), the
+    surface-based transport of each size class of a gravel bed without
+    sand (F_s = 0): the reference Shields number of the surface's mean
+    size tau*_rm = 0.021 + 0.015 exp(-20 F_s) = 0.036 (their Eq. 6), the
+    hiding function tau_ri / tau_rm = (D_i/D_sm)^b, b = 0.67 / (1 +
+    exp(1.5 - D_i/D_sm)) (Eq. 3-4), and W*_i = 0.002 phi^7.5 below phi =
+    1.35, 14 (1 - 0.894/phi^0.5)^4.5 above (Eq. 7), phi = tau/tau_ri,
+    with q_i = W*_i F_i u*^3 / ((s - 1) g). classes: (D_i m, F_i surface
+    share); D_sm their geometric mean (their Eq. uses it in psi units).
+    Returns per class (tau_ri Pa, W*_i, q_i m2/s)."""
+    dsm = math.exp(sum(f*math.log(d) for d, f in classes)/
+                   sum(f for d, f in classes))
+    taurm = 0.036*(RHOS - RHO)*G*dsm
+    ustar3 = (tau/RHO)**1.5
+    out = []
+    for d, f in classes:
+        b = 0.67/(1.0 + math.exp(1.5 - d/dsm))
+        tauri = taurm*(d/dsm)**b
+        phi = tau/tauri
+        w = (0.002*phi**7.5 if phi < 1.35
+             else 14.0*(1.0 - 0.894/math.sqrt(phi))**4.5)
+        out.append((tauri, w, w*f*ustar3/(S1*G)))
+    return out
+
+
+def fractions(run):
+    """Which grains move, on a graded bed (Allrun -grading): per size
+    class over the averaging window (the dumps post/grains.*.txt), its
+    share of the mobile bed's mass f_i, its share F_i of the bed's surface
+    seen from above (point counts, as flume photographs give Wilcock &
+    Crowe's F_i: on a grid of 1 mm the grain whose sphere reaches highest
+    over each point; the mobile grains, moving or not), its flux q_i =
+    sum of V_p u_p,x / (lx ly), the share p_i = q_i / q of the flux, the
+    share of its exposed grains (a quarter or more of their cross-section
+    seen from above) that move (faster than 0.05 m/s) and the mean
+    streamwise fluid force on those at rest over their submerged weight;
+    against Wilcock & Crowe at the imposed stress. The
+    mobility ratio M = (q_1/F_1)/(q_n/F_n), finest over coarsest, is 1
+    for equal mobility; Wilcock & Crowe give M > 1 (the fine grains move
+    more, per share of the surface). Writes <run>/fractions.summary."""
+    s, flux, T, t0, tHalf, win = fluxWindow(run)
+    area = s['lx']*s['ly']
+    frozenBelow = 0.0075        # DEM/in.pour: centres below it are frozen
+    q, surf, bulk, moving, nSurf, fxW = {}, {}, {}, {}, {}, {}
+    nDumps = 0
+    for header, atoms in windowDumps(run, t0):
+        cols = header[2:]
+        ix = {k: cols.index(k) for k in ('x', 'y', 'z', 'vx', 'radius')}
+        ifx = cols.index('v_fxFluid') if 'v_fxFluid' in cols else None
+        g = []
+        for w in atoms:
+            r = float(w[ix['radius']])
+            g.append((float(w[ix['x']]), float(w[ix['y']]), float(w[ix['z']]),
+                      float(w[ix['vx']]), r,
+                      float(w[ifx]) if ifx is not None else float('nan')))
+        if not g:
+            continue
+        nDumps += 1
+        # the surface seen from above: per point of a 1 mm grid (periodic
+        # in x and y) the highest reach of a mobile grain over it
+        h = 0.001
+        nx, ny = int(round(s['lx']/h)), int(round(s['ly']/h))
+        best = {}
+        for k, (x, y, z, vx, r, fx) in enumerate(g):
+            if z < frozenBelow:
+                continue
+            for i in range(int(math.ceil((x - r)/h)), int((x + r)//h) + 1):
+                for j in range(int(math.ceil((y - r)/h)),
+                               int((y + r)//h) + 1):
+                    rho2 = (i*h - x)**2 + (j*h - y)**2
+                    if rho2 > r*r:
+                        continue
+                    top = z + math.sqrt(r*r - rho2)
+                    key = (i % nx, j % ny)
+                    if key not in best or top > best[key][0]:
+                        best[key] = (top, k)
+        seen = {}
+        for top, k in best.values():
+            seen[k] = seen.get(k, 0) + 1
+        for k, (x, y, z, vx, r, fx) in enumerate(g):
+            d = round(2000*r, 1)            # mm, the class
+            vol = math.pi/6*(2*r)**3
+            q[d] = q.get(d, 0.0) + vol*vx/area
+            if z < frozenBelow:
+                continue
+            bulk[d] = bulk.get(d, 0.0) + vol
+            surf[d] = surf.get(d, 0.0) + seen.get(k, 0)
+            if seen.get(k, 0) >= 0.25*math.pi*r*r/(h*h):
+                nSurf[d] = nSurf.get(d, 0) + 1
+                if vx > 0.05:
+                    moving[d] = moving.get(d, 0) + 1
+                else:
+                    fxW.setdefault(d, []).append(
+                        fx/((RHOS - RHO)*G*vol))
+    if not nDumps:
+        sys.exit('%s: no grain dumps in the window t >= %g' % (run, t0))
+    ds = sorted(bulk)
+    if len(ds) < 2:
+        sys.exit('%s: one grain size only (%s mm): fractions needs a graded '
+                 'bed (Allrun -grading)' % (run, ' '.join('%g' % d for d in ds)))
+    qt = sum(q[d] for d in ds)
+    bt, st = sum(bulk.values()), sum(surf.values())
+    tau = s['forcing']*s['depth']
+    wc = wilcockCrowe(tau, [(d/1000, surf.get(d, 0.0)/st) for d in ds])
+    qwct = sum(w[2] for w in wc)
+    rows = []
+    for d, w in zip(ds, wc):
+        F = surf.get(d, 0.0)/st
+        rows.append({'d_mm': d, 'f': bulk[d]/bt, 'F': F,
+                     'q': q[d]/nDumps, 'p': q[d]/qt if qt else float('nan'),
+                     'qOverF': q[d]/nDumps/F if F else float('nan'),
+                     'moving': moving.get(d, 0)/nSurf[d] if nSurf.get(d)
+                     else float('nan'),
+                     'fxOverW': mean(fxW.get(d, [])),
+                     'tauRef': w[0], 'pWC': w[2]/qwct if qwct else float('nan'),
+                     'qOverFWC': w[2]/F if F else float('nan')})
+    M = rows[0]['qOverF']/rows[-1]['qOverF'] if rows[-1]['qOverF'] \
+        else float('nan')
+    MWC = rows[0]['qOverFWC']/rows[-1]['qOverFWC']
+    print('%s: theta %g on d_ref %g mm, tau_b %.3f Pa, window %.3g-%.3g s, '
+          '%d dumps' % (run, s['theta'], 1000*s['dRef'], tau, t0, T, nDumps))
+    print('%-6s %-6s %-6s %-10s %-6s %-7s %-8s %-8s %-6s' % (
+        'd mm', 'f_i', 'F_i', 'q_i m2/s', 'p_i', 'p_i WC', 'moving', 'Fx/W\'',
+        'tau_ri'))
+    for r in rows:
+        print('%-6g %-6.3f %-6.3f %-10.3g %-6.3f %-7.3f %-8.3f %-8.3f %-6.2f'
+              % (r['d_mm'], r['f'], r['F'], r['q'], r['p'], r['pWC'],
+                 r['moving'], r['fxOverW'], r['tauRef']))
+    print('mobility ratio M = (q/F) finest over coarsest: %.3g (Wilcock-Crowe '
+          '%.3g; 1: equal mobility); q total %.3g m2/s (Wilcock-Crowe %.3g)'
+          % (M, MWC, qt/nDumps, qwct))
+    with open(os.path.join(run, 'fractions.summary'), 'w') as f:
+        f.write('# bedloadAnalysis.py fractions: per class d_mm f F q p pWC '
+                'moving fxOverW tauRef; then M, M_WC, q, q_WC\n')
+        for r in rows:
+            f.write('class %g %.6g %.6g %.6g %.6g %.6g %.6g %.6g %.6g\n' % (
+                r['d_mm'], r['f'], r['F'], r['q'], r['p'], r['pWC'],
+                r['moving'], r['fxOverW'], r['tauRef']))
+        f.write('M %.6g\nM_WC %.6g\nq %.6g\nq_WC %.6g\n'
+                % (M, MWC, qt/nDumps, qwct))
+    return rows, M, MWC
+
+
+def fractionsChart(outPng, entries):
+    """Which grains move, as a chart: for runs on graded beds
+    (label=<run>, several per label), left the fine class's share of the
+    flux p_1 against theta, right the mobility ratio M, each beside
+    Wilcock & Crowe's at the same stress and surface (open symbols)."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, (axP, axM) = plt.subplots(1, 2, figsize=(11, 4.5))
+    marks = 'osD^v<>ph'
+    for n, entry in enumerate(entries):
+        label, runs = entry.split('=', 1)
+        pts = []
+        for run in runs.split(','):
+            rows, M, MWC = fractions(run)
+            pts.append((settings(run)['theta'], rows[0]['p'], rows[0]['pWC'],
+                        M, MWC, rows[0]['d_mm'], rows[-1]['d_mm']))
+        pts.sort()
+        c = 'C%d' % n
+        th = [p[0] for p in pts]
+        axP.plot(th, [p[1] for p in pts], marks[n % len(marks)] + '-',
+                 color=c, label=label)
+        axP.plot(th, [p[2] for p in pts], marks[n % len(marks)] + ':',
+                 color=c, mfc='none')
+        axM.plot(th, [p[3] for p in pts], marks[n % len(marks)] + '-',
+                 color=c, label=label)
+        axM.plot(th, [p[4] for p in pts], marks[n % len(marks)] + ':',
+                 color=c, mfc='none')
+    axP.set_xlabel(r'$\theta$ on the geometric mean diameter')
+    axP.set_ylabel('the fine class\'s share of the flux $p_1$')
+    axP.set_ylim(0, 1)
+    axP.set_title('filled: interDemFoam; open: Wilcock & Crowe (2003)')
+    axP.legend(fontsize=8)
+    axM.set_xlabel(r'$\theta$ on the geometric mean diameter')
+    axM.set_ylabel(r'$M = (q_1/F_1)\,/\,(q_n/F_n)$, fine over coarse')
+    axM.set_yscale('log')
+    axM.axhline(1, color='k', lw=0.8, ls='--')
+    axM.text(axM.get_xlim()[0], 1.05, ' equal mobility', fontsize=8)
+    axM.set_title('mobility per share of the surface')
+    fig.tight_layout()
+    fig.savefig(outPng, dpi=120)
+    print('wrote %s' % outPng)
+
+
 def onsetMap(outPath, entries):
     """The measured onsets for checkDemScene (etc/sceneMaps): per model the
     last Shields number of a sweep without sustained transport and the
@@ -763,6 +978,11 @@ if __name__ == '__main__':
         mobileChart(args[1], args[2:])
     elif len(args) >= 2 and args[0] == 'mobile':
         mobile(args[1:])
+    elif len(args) >= 3 and args[0] == 'fractionsChart':
+        fractionsChart(args[1], args[2:])
+    elif len(args) >= 2 and args[0] == 'fractions':
+        for run in args[1:]:
+            fractions(run)
     elif len(args) >= 3 and args[0] == 'onsetMap':
         onsetMap(args[1], args[2:])
     else:
