@@ -28,7 +28,9 @@
 #     mean size W* = 0.002 (their Eq. 7 at phi = 1); for 10/20 mm in equal
 #     shares at twice that stress the hiding function (Eq. 3-4) gives
 #     tau_r 0.930 and 1.118 of tau_rm, phi 2.150 and 1.789, W* 0.2029 and
-#     0.0976: the fine class moves 2.08 times more per share (+-0.01)
+#     0.0976: the fine class moves 2.08 times more per share (+-0.01); a
+#     copy without the hiding function (b = 0) gives 1 and must fail
+#     (negative control, run here)
 #   - bedloadAnalysis.py mobile (for beds of 10 mm grains) refuses the
 #     graded run, naming it
 # About 1 min on one core.
@@ -120,10 +122,12 @@ awk -v v="$control" 'BEGIN { exit !(v > -0.01 && v < 0.01) }' \
     && fail "negative control: the broken volume passed the flux check ($control)"
 
 # 6. Wilcock & Crowe against their equations worked by hand
-read -r wRef ratio <<< "$(/usr/bin/python3 - <<'EOF'
-import math, sys
-sys.path.insert(0, '.')
-import bedloadAnalysis as b
+wilcockCrowe()   # <bedloadAnalysis.py to use>: W* at phi 1, W*_10/W*_20
+{
+    /usr/bin/python3 - "$1" <<'EOF'
+import importlib.util, math, sys
+spec = importlib.util.spec_from_file_location('b', sys.argv[1])
+b = importlib.util.module_from_spec(spec); spec.loader.exec_module(b)
 d = 0.01
 taurm = 0.036*(b.RHOS - b.RHO)*b.G*d
 print(b.wilcockCrowe(taurm, [(d, 1.0)])[0][1], end=' ')
@@ -131,14 +135,23 @@ dsm = math.sqrt(0.01*0.02)
 w = b.wilcockCrowe(2*0.036*(b.RHOS - b.RHO)*b.G*dsm, [(0.01, 0.5), (0.02, 0.5)])
 print(w[0][1]/w[1][1])
 EOF
-)"
+}
+read -r wRef ratio <<< "$(wilcockCrowe bedloadAnalysis.py)"
 echo "Wilcock-Crowe: W* at the reference stress $wRef (0.002), fine over coarse at twice it $ratio (2.08)"
 check "Wilcock-Crowe W* at phi 1" "$wRef" 'v > 0.002*(1 - 1e-9) && v < 0.002*(1 + 1e-9)' "W* $wRef at the reference stress, expected 0.002"
 check "Wilcock-Crowe mobility 10/20 mm" "$ratio" 'v > 2.07 && v < 2.09' "W*_10/W*_20 $ratio at twice the reference stress, expected 2.08"
+# negative control: no hiding function
+sed 's|b = 0.67/(1.0 + math.exp(1.5 - d/dsm))|b = 0.0|' bedloadAnalysis.py > noHiding.py
+cmp -s bedloadAnalysis.py noHiding.py && fail "negative control: the sed found no hiding function to remove"
+read -r wRefNo ratioNo <<< "$(wilcockCrowe noHiding.py)"
+echo "negative control (no hiding function): fine over coarse $ratioNo"
+requireNumber "negative control's mobility ratio" "$ratioNo"
+awk -v v="$ratioNo" 'BEGIN { exit !(v > 2.07 && v < 2.09) }' \
+    && fail "negative control: without the hiding function the mobility check passed ($ratioNo)"
 
 # 7. The monodisperse commands refuse a graded run
 out=$(/usr/bin/python3 bedloadAnalysis.py mobile $run 2>&1) && fail "bedloadAnalysis.py mobile ran on the graded run"
 echo "$out" | grep -q "$run: a graded bed" || fail "bedloadAnalysis.py mobile on the graded run: '$out', expected it to name the run and the graded bed"
 echo "mobile on the graded run: $out"
 
-pass "graded bed: poured shares $share10 / $share20, $mass kg; dRef $dRef; class fluxes within $relDiff of DEM/flux.dat (control $control); Wilcock-Crowe $wRef, $ratio"
+pass "graded bed: poured shares $share10 / $share20, $mass kg; dRef $dRef; class fluxes within $relDiff of DEM/flux.dat (control $control); Wilcock-Crowe $wRef, $ratio (control $ratioNo)"
