@@ -168,10 +168,11 @@ def fluxWindow(run):
     return s, flux, T, t0, tHalf, [r for r in flux if r[0] >= t0]
 
 
-def windowDumps(run, t0):
+def windowDumps(run, t0, withTime=False):
     """The grain dumps post/grains.<step>.txt from t0 on (in step order):
-    per dump, its 'ITEM: ATOMS' header's words and its atom lines' words;
-    dumps without that header are left out."""
+    per dump, its 'ITEM: ATOMS' header's words and its atom lines' words
+    (withTime: its time first, s); dumps without that header are left
+    out."""
     post = os.path.join(run, 'post')
     files = sorted((int(f.split('.')[1]), f) for f in os.listdir(post)
                    if f.startswith('grains.') and f.endswith('.txt'))
@@ -182,7 +183,8 @@ def windowDumps(run, t0):
             lines = fh.readlines()
         i = [k for k, l in enumerate(lines) if l.startswith('ITEM: ATOMS')]
         if i:
-            yield lines[i[0]].split(), [l.split() for l in lines[i[0] + 1:]]
+            words = (lines[i[0]].split(), [l.split() for l in lines[i[0] + 1:]])
+            yield ((step*1e-4,) + words) if withTime else words
 
 
 def layerMeans(values, nxy):
@@ -759,41 +761,53 @@ def fractions(run):
     class over the averaging window (the dumps post/grains.*.txt), its
     share of the mobile bed's mass f_i, its share F_i of the bed's surface
     seen from above (point counts, as flume photographs give Wilcock &
-    Crowe's F_i: on a grid of 1 mm the grain whose sphere reaches highest
-    over each point; the mobile grains, moving or not), its flux q_i =
-    sum of V_p u_p,x / (lx ly), the share p_i = q_i / q of the flux, the
-    share of its exposed grains (a quarter or more of their cross-section
-    seen from above) that move (faster than 0.05 m/s) and the mean
-    streamwise fluid force on those at rest over their submerged weight;
-    against Wilcock & Crowe at the imposed stress. The
+    Crowe's F_i: on a grid of 1 mm, periodic in x and y, the mobile grain
+    whose sphere reaches highest over each point, moving or not), its
+    flux q_i = sum of V_p u_p,x / (lx ly), the share p_i = q_i / q of the
+    flux, the share of its exposed grains (a quarter or more of their
+    cross-section seen from above) that move (faster than 0.05 m/s) and
+    the mean streamwise fluid force on those at rest over their submerged
+    weight; against Wilcock & Crowe at the imposed stress. The frozen
+    grains (DEM/in.pour: centres below 1.5 r in the poured bed, found by
+    their ids in post/grains.0.txt) are no part of the bed's shares. The
     mobility ratio M = (q_1/F_1)/(q_n/F_n), finest over coarsest, is 1
     for equal mobility; Wilcock & Crowe give M > 1 (the fine grains move
-    more, per share of the surface). Writes <run>/fractions.summary."""
+    more, per share of the surface); M is also given for each half of the
+    window (its spread). Writes <run>/fractions.summary."""
     s, flux, T, t0, tHalf, win = fluxWindow(run)
     area = s['lx']*s['ly']
-    frozenBelow = 0.0075        # DEM/in.pour: centres below it are frozen
-    q, surf, bulk, moving, nSurf, fxW = {}, {}, {}, {}, {}, {}
-    nDumps = 0
-    for header, atoms in windowDumps(run, t0):
+    if not os.path.exists(os.path.join(run, 'post', 'grains.0.txt')):
+        sys.exit('%s: no post/grains.0.txt (the bed at the start)' % run)
+    frozen = None
+    for header, atoms in windowDumps(run, 0.0):
         cols = header[2:]
-        ix = {k: cols.index(k) for k in ('x', 'y', 'z', 'vx', 'radius')}
+        iid, iz, ir = (cols.index(k) for k in ('id', 'z', 'radius'))
+        frozen = set(w[iid] for w in atoms
+                     if float(w[iz]) < 1.5*float(w[ir]))
+        break
+    h = 0.001                                   # the surface's grid, m
+    nx, ny = int(round(s['lx']/h)), int(round(s['ly']/h))
+    q, surf, bulk, moving, nSurf, fxW = {}, {}, {}, {}, {}, {}
+    halfQ, halfF, halfN = ({}, {}), ({}, {}), [0, 0]
+    nDumps = 0
+    for t, header, atoms in windowDumps(run, t0, withTime=True):
+        cols = header[2:]
+        ix = [cols.index(k) for k in ('x', 'y', 'z', 'vx', 'radius')]
+        iid = cols.index('id')
         ifx = cols.index('v_fxFluid') if 'v_fxFluid' in cols else None
-        g = []
-        for w in atoms:
-            r = float(w[ix['radius']])
-            g.append((float(w[ix['x']]), float(w[ix['y']]), float(w[ix['z']]),
-                      float(w[ix['vx']]), r,
-                      float(w[ifx]) if ifx is not None else float('nan')))
+        g = [tuple(float(w[i]) for i in ix)
+             + (float(w[ifx]) if ifx is not None else float('nan'),
+                w[iid] in frozen) for w in atoms]
         if not g:
             continue
         nDumps += 1
-        # the surface seen from above: per point of a 1 mm grid (periodic
-        # in x and y) the highest reach of a mobile grain over it
-        h = 0.001
-        nx, ny = int(round(s['lx']/h)), int(round(s['ly']/h))
+        k2 = 0 if t < tHalf else 1
+        halfN[k2] += 1
+        # the surface seen from above: per grid point the highest reach of
+        # a mobile grain over it
         best = {}
-        for k, (x, y, z, vx, r, fx) in enumerate(g):
-            if z < frozenBelow:
+        for k, (x, y, z, vx, r, fx, fz) in enumerate(g):
+            if fz:
                 continue
             for i in range(int(math.ceil((x - r)/h)), int((x + r)//h) + 1):
                 for j in range(int(math.ceil((y - r)/h)),
@@ -808,14 +822,16 @@ def fractions(run):
         seen = {}
         for top, k in best.values():
             seen[k] = seen.get(k, 0) + 1
-        for k, (x, y, z, vx, r, fx) in enumerate(g):
+        for k, (x, y, z, vx, r, fx, fz) in enumerate(g):
             d = round(2000*r, 1)            # mm, the class
             vol = math.pi/6*(2*r)**3
             q[d] = q.get(d, 0.0) + vol*vx/area
-            if z < frozenBelow:
+            halfQ[k2][d] = halfQ[k2].get(d, 0.0) + vol*vx/area
+            if fz:
                 continue
             bulk[d] = bulk.get(d, 0.0) + vol
             surf[d] = surf.get(d, 0.0) + seen.get(k, 0)
+            halfF[k2][d] = halfF[k2].get(d, 0.0) + seen.get(k, 0)
             if seen.get(k, 0) >= 0.25*math.pi*r*r/(h*h):
                 nSurf[d] = nSurf.get(d, 0) + 1
                 if vx > 0.05:
@@ -845,8 +861,16 @@ def fractions(run):
                      'fxOverW': mean(fxW.get(d, [])),
                      'tauRef': w[0], 'pWC': w[2]/qwct if qwct else float('nan'),
                      'qOverFWC': w[2]/F if F else float('nan')})
-    M = rows[0]['qOverF']/rows[-1]['qOverF'] if rows[-1]['qOverF'] \
-        else float('nan')
+
+    def ratio(qd, Fd):
+        """M from class sums of q and of surface points."""
+        a, b = ds[0], ds[-1]
+        if not Fd.get(a) or not Fd.get(b) or not qd.get(b):
+            return float('nan')
+        return (qd.get(a, 0.0)/Fd[a])/(qd[b]/Fd[b])
+    M = ratio(q, surf)
+    Mh = [ratio(halfQ[k], halfF[k]) if halfN[k] else float('nan')
+          for k in (0, 1)]
     MWC = rows[0]['qOverFWC']/rows[-1]['qOverFWC']
     print('%s: theta %g on d_ref %g mm, tau_b %.3f Pa, window %.3g-%.3g s, '
           '%d dumps' % (run, s['theta'], 1000*s['dRef'], tau, t0, T, nDumps))
@@ -857,18 +881,20 @@ def fractions(run):
         print('%-6g %-6.3f %-6.3f %-10.3g %-6.3f %-7.3f %-8.3f %-8.3f %-6.2f'
               % (r['d_mm'], r['f'], r['F'], r['q'], r['p'], r['pWC'],
                  r['moving'], r['fxOverW'], r['tauRef']))
-    print('mobility ratio M = (q/F) finest over coarsest: %.3g (Wilcock-Crowe '
-          '%.3g; 1: equal mobility); q total %.3g m2/s (Wilcock-Crowe %.3g)'
-          % (M, MWC, qt/nDumps, qwct))
+    print('mobility ratio M = (q/F) finest over coarsest: %.3g (halves of the '
+          'window %.3g, %.3g; Wilcock-Crowe %.3g; 1: equal mobility); q total '
+          '%.3g m2/s (Wilcock-Crowe %.3g)'
+          % (M, Mh[0], Mh[1], MWC, qt/nDumps, qwct))
     with open(os.path.join(run, 'fractions.summary'), 'w') as f:
         f.write('# bedloadAnalysis.py fractions: per class d_mm f F q p pWC '
-                'moving fxOverW tauRef; then M, M_WC, q, q_WC\n')
+                'moving fxOverW tauRef; then M (its halves M1, M2), M_WC, q, '
+                'q_WC\n')
         for r in rows:
             f.write('class %g %.6g %.6g %.6g %.6g %.6g %.6g %.6g %.6g\n' % (
                 r['d_mm'], r['f'], r['F'], r['q'], r['p'], r['pWC'],
                 r['moving'], r['fxOverW'], r['tauRef']))
-        f.write('M %.6g\nM_WC %.6g\nq %.6g\nq_WC %.6g\n'
-                % (M, MWC, qt/nDumps, qwct))
+        f.write('M %.6g\nM1 %.6g\nM2 %.6g\nM_WC %.6g\nq %.6g\nq_WC %.6g\n'
+                % (M, Mh[0], Mh[1], MWC, qt/nDumps, qwct))
     return rows, M, MWC
 
 
