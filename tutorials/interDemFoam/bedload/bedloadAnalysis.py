@@ -261,6 +261,24 @@ def readSummary(run):
     return out
 
 
+def modelLabel(run):
+    """A run's model in a few words, for a chart: its turbulence model
+    (constant/turbulenceProperties; laminar without one) and its cell size
+    over the reference diameter."""
+    model = 'laminar'
+    path = os.path.join(run, 'constant', 'turbulenceProperties')
+    if os.path.exists(path):
+        words = open(path).read().replace(';', ' ').split()
+        for key in ('RASModel', 'LESModel'):
+            if key in words:
+                model = words[words.index(key) + 1]
+    s = settings(run)
+    cells = ''
+    if 'nx' in s and s['nx'] > 0:
+        cells = ', cells %.3g d' % (s['lx']/s['nx']/s['dRef'])
+    return model + cells
+
+
 def collect(outName, runs, plot=True):
     rows = []
     for run in runs:
@@ -342,7 +360,7 @@ def collect(outName, runs, plot=True):
     zero = [r for r in rows if r['qstar'] <= floor]
     ax.errorbar([r['theta'] for r in pos], [r['qstar'] for r in pos],
                 yerr=[r['qstarErr'] for r in pos], fmt='o', color='tab:red',
-                label='interDemFoam (laminar, cells 2 d)')
+                label='interDemFoam (%s)' % modelLabel(rows[0]['run']))
     if zero:
         ax.plot([r['theta'] for r in zero], [floor*1.3]*len(zero), 'v',
                 color='tab:red', mfc='none',
@@ -364,7 +382,11 @@ def collect(outName, runs, plot=True):
     ax.set_xlim(0, max(0.35, 1.05*rows[-1]['theta']))
     ax.set_xlabel(r'Shields number $\theta = \tau_b/((\rho_s-\rho) g d)$')
     ax.set_ylabel(r'$q^* = q_s/\sqrt{(s-1) g d^3}$')
-    ax.set_title('Bedload, d = 10 mm: %s' % os.path.basename(outName))
+    dRef = rows[0].get('dRef', D)          # summaries from before -grading: 10 mm
+    ax.set_title('Bedload, d = %s: %s' % (
+        '10 mm' if abs(dRef - D) < 1e-9 else
+        '%.3g mm (geometric mean of the grading)' % (1000*dRef),
+        os.path.basename(outName)))
     ax.legend(fontsize=7, loc='lower right')
     ax.grid(alpha=0.3)
     fig.tight_layout()
