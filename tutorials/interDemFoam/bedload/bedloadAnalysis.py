@@ -800,7 +800,7 @@ def fractions(run):
     area = s['lx']*s['ly']
     if not os.path.exists(os.path.join(run, 'post', 'grains.0.txt')):
         sys.exit('%s: no post/grains.0.txt (the bed at the start)' % run)
-    frozen = None
+    frozen = set()
     for header, atoms in windowDumps(run, 0.0):
         cols = header[2:]
         iid, iz, ir = (cols.index(k) for k in ('id', 'z', 'radius'))
@@ -809,7 +809,8 @@ def fractions(run):
         break
     h = 0.001                                   # the surface's grid, m
     nx, ny = int(round(s['lx']/h)), int(round(s['ly']/h))
-    q, surf, bulk, moving, nSurf, fxW = {}, {}, {}, {}, {}, {}
+    bulk, moving, nSurf, fxW = {}, {}, {}, {}
+    # per half of the window: the classes' summed flux and surface points
     halfQ, halfF, halfN = ({}, {}), ({}, {}), [0, 0]
     nDumps = 0
     for t, header, atoms in windowDumps(run, t0, withTime=True):
@@ -847,12 +848,10 @@ def fractions(run):
         for k, (x, y, z, vx, r, fx, fz) in enumerate(g):
             d = round(2000*r, 1)            # mm, the class
             vol = math.pi/6*(2*r)**3
-            q[d] = q.get(d, 0.0) + vol*vx/area
             halfQ[k2][d] = halfQ[k2].get(d, 0.0) + vol*vx/area
             if fz:
                 continue
             bulk[d] = bulk.get(d, 0.0) + vol
-            surf[d] = surf.get(d, 0.0) + seen.get(k, 0)
             halfF[k2][d] = halfF[k2].get(d, 0.0) + seen.get(k, 0)
             if seen.get(k, 0) >= 0.25*math.pi*r*r/(h*h):
                 nSurf[d] = nSurf.get(d, 0) + 1
@@ -867,6 +866,9 @@ def fractions(run):
     if len(ds) < 2:
         sys.exit('%s: one grain size only (%s mm): fractions needs a graded '
                  'bed (Allrun -grading)' % (run, ' '.join('%g' % d for d in ds)))
+    q = {d: halfQ[0].get(d, 0.0) + halfQ[1].get(d, 0.0)
+         for d in set(halfQ[0]) | set(halfQ[1])}
+    surf = {d: halfF[0].get(d, 0.0) + halfF[1].get(d, 0.0) for d in ds}
     qt = sum(q[d] for d in ds)
     bt, st = sum(bulk.values()), sum(surf.values())
     tau = s['forcing']*s['depth']
@@ -936,7 +938,7 @@ def fractionsChart(outPng, entries):
         for run in runs.split(','):
             rows, M, MWC = fractions(run)
             pts.append((settings(run)['theta'], rows[0]['p'], rows[0]['pWC'],
-                        M, MWC, rows[0]['d_mm'], rows[-1]['d_mm']))
+                        M, MWC))
         pts.sort()
         c = 'C%d' % n
         th = [p[0] for p in pts]
