@@ -47,7 +47,12 @@
 #     (negative control, run here)
 #   - bedloadAnalysis.py mobile (for beds of 10 mm grains) refuses the
 #     graded run, naming it
-# About 15 s on one core.
+#   - -fluidVelocity roughnessLayer (the flow between the crests): Allrun
+#     refuses -roughnessLayer without it and troughs above the zero plane
+#     ("0.25 0.2"); on the graded bed it writes its d84 by mass, 0.02 m,
+#     as the roughness diameter, and a 1 s run names the model with it in
+#     its log
+# About 25 s on one core.
 #------------------------------------------------------------------------------
 . "$(dirname "$0")/caseFunctions.sh"
 
@@ -66,6 +71,19 @@ badGrading()   # <grading> <text the message must hold>
 badGrading "10:0.6 20:0.5" "sum to 1.1, not 1"
 badGrading "10:0.5 50:0.5" "each diameter 10-30 mm"
 badGrading "10-1" "<diameter mm>:<mass share> pairs"
+
+# -roughnessLayer: only with its model, troughs at or below the zero plane
+badLayer()   # <text the message must hold> <Allrun options...>
+{
+    local out text="$1"; shift
+    out=$(./Allrun -size small "$@" -theta 0.3 2>&1) \
+        && fail "Allrun $* ran, expected an error"
+    echo "$out" | grep -qF -- "$text" \
+        || fail "Allrun $*: message '$out', expected '$text'"
+    echo "bad $*: $out"
+}
+badLayer "-roughnessLayer is for -fluidVelocity roughnessLayer" -roughnessLayer "0.25 1"
+badLayer "must be a number at least the crests' height 0.25 (the troughs at or below the zero plane), got '0.2'" -fluidVelocity roughnessLayer -roughnessLayer "0.25 0.2"
 
 # 2. The run
 ./Allrun -size small -tag graded -grading "10:0.5 20:0.5" -theta 0.3 -endTime 4 > log.Allrun 2>&1 \
@@ -222,5 +240,14 @@ awk -v v="$ratioNo" 'BEGIN { exit !(v > 2.07 && v < 2.09) }' \
 out=$(/usr/bin/python3 bedloadAnalysis.py mobile $run 2>&1) && fail "bedloadAnalysis.py mobile ran on the graded run"
 echo "$out" | grep -q "$run: a graded bed" || fail "bedloadAnalysis.py mobile on the graded run: '$out', expected it to name the run and the graded bed"
 echo "mobile on the graded run: $out"
+
+# 8. The flow between the crests on the graded bed: D its d84 by mass
+./Allrun -size small -tag layer -grading "10:0.5 20:0.5" -fluidVelocity roughnessLayer -theta 0.3 -endTime 1 > log.layer 2>&1 \
+    || { tail -20 log.layer; fail "Allrun -fluidVelocity roughnessLayer (log.layer)"; }
+layerD=$(foamDictionary -entry roughnessLayerCoeffs/roughnessDiameter -value layer.theta.0.3/constant/couplingProperties)
+echo "roughnessLayer: roughness diameter $layerD m (the d84 by mass, 0.02)"
+check "roughness diameter" "$layerD" 'v == 0.02' "roughnessLayerCoeffs/roughnessDiameter $layerD, expected 0.02 (the 20 mm class)"
+grep -q "D 0.02 m) over the bed's zero plane" layer.theta.0.3/log.interDemFoam \
+    || fail "the roughnessLayer run's log does not name its model with D 0.02 m"
 
 pass "graded bed: poured shares $share10 / $share20, $mass kg; dRef $dRef; class fluxes within $relDiff of DEM/flux.dat (control $control); made-up surface F_10 $F10 (controls $F10No, $f10No); Wilcock-Crowe $wRef, $ratio (control $ratioNo)"

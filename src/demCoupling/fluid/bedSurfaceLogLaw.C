@@ -92,6 +92,25 @@ Foam::scalar Foam::demCoupling::bedSurfaceLogLaw::zeroPlane
 }
 
 
+Foam::scalar Foam::demCoupling::bedSurfaceLogLaw::speedAt
+(
+    const scalar z,
+    const scalar zE,
+    const scalar z0,
+    const scalar,
+    const scalar logAbove,
+    const scalar magUabove
+) const
+{
+    const scalar height = z - zE;
+    // the law below the anchor, no higher than it above
+    return
+        height > z0
+      ? magUabove*min(Foam::log(height/z0)/logAbove, scalar(1))
+      : 0;
+}
+
+
 Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
 (
     const scalar zCentre,
@@ -106,7 +125,8 @@ Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
 {
     const scalar r = 0.5*d;
     const scalar zE = zeroPlane(zLow, zHigh, solidHost, solidBelow);
-    const scalar z0 = roughness_*d/30;
+    const scalar z0 = roughnessLength(d);
+    const scalar zBottom = flowBottom(zE, d);
     const scalar zAbove = zHigh + 0.5*(zHigh - zLow);
     const scalar magUabove = mag(Uabove);
 
@@ -114,16 +134,16 @@ Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
     // the bed's roughness, or no flow above)
     if
     (
-        zCentre + r <= zE || zAbove - zE <= 2*z0 || magUabove < VSMALL
+        zCentre + r <= zBottom || zAbove - zE <= 2*z0 || magUabove < VSMALL
     )
     {
         return Uhost;
     }
 
     // The exposed part of the cross-section: z = zCentre - r cos(phi),
-    // phi from phiLow (the zero plane, or the grain's bottom) to pi; the
+    // phi from phiLow (the flow's bottom, or the grain's) to pi; the
     // width there is 2 r sin(phi) and dz = r sin(phi) dphi
-    const scalar cosLow = min(max((zCentre - zE)/r, -1), 1);
+    const scalar cosLow = min(max((zCentre - zBottom)/r, -1), 1);
     const scalar phiLow = Foam::acos(cosLow);
     const scalar logAbove = Foam::log((zAbove - zE)/z0);
     const scalar dphi = (constant::mathematical::pi - phiLow)/nQuadrature;
@@ -131,12 +151,10 @@ Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
     for (label i = 0; i < nQuadrature; ++i)
     {
         const scalar phi = phiLow + (i + 0.5)*dphi;
-        const scalar height = zCentre - r*Foam::cos(phi) - zE;
-        // the law below the anchor, no higher than it above
-        const scalar u =
-            height > z0
-          ? magUabove*min(Foam::log(height/z0)/logAbove, scalar(1))
-          : 0;
+        const scalar u = speedAt
+        (
+            zCentre - r*Foam::cos(phi), zE, z0, d, logAbove, magUabove
+        );
         const scalar s = Foam::sin(phi);
         u2Area += sqr(u)*2*sqr(r)*sqr(s)*dphi;
     }

@@ -15,6 +15,7 @@ Foam::demCoupling::fluidSampler::velocitySourceNames
     { velocitySource::cellPoint, "cellPoint" },
     { velocitySource::grainTop, "grainTop" },
     { velocitySource::bedSurfaceLogLaw, "bedSurfaceLogLaw" },
+    { velocitySource::roughnessLayer, "roughnessLayer" },
 });
 
 namespace
@@ -23,7 +24,10 @@ namespace
 // The keywords of couplingProperties the sampler reads
 const Foam::demCoupling::couplingKeywords::declare keywords
 (
-    {"fluidVelocity", "velocityFluctuation", "bedSurfaceLogLawCoeffs"}
+    {
+        "fluidVelocity", "velocityFluctuation", "bedSurfaceLogLawCoeffs",
+        "roughnessLayerCoeffs"
+    }
 );
 
 // Writes scalars and vectors one after the other into a buffer slot, or
@@ -88,7 +92,10 @@ Foam::demCoupling::fluidSampler::fluidSampler
         " grainTop (reconstructed at the particle's top, d/2 above its"
         " centre against gravity) and bedSurfaceLogLaw (the rough-bed log"
         " law in the cell that holds the bed's surface, over the"
-        " particle's exposed part; bedSurfaceLogLawCoeffs)"
+        " particle's exposed part; bedSurfaceLogLawCoeffs) and"
+        " roughnessLayer (that law above the bed's crests and the"
+        " roughness layer's linear profile between them;"
+        " roughnessLayerCoeffs)"
     );
     if (velocity_ == velocitySource::cellPoint)
     {
@@ -114,7 +121,26 @@ Foam::demCoupling::fluidSampler::fluidSampler
             << " part (fluidVelocity bedSurfaceLogLaw, Wiberg & Smith 1987)"
             << endl;
     }
-    else if (dict.found("bedSurfaceLogLawCoeffs"))
+    else if (velocity_ == velocitySource::roughnessLayer)
+    {
+        roughnessLayerLogLaw* layer = new roughnessLayerLogLaw(dict);
+        logLaw_.reset(layer);
+        Info<< "Fluid velocity at each particle: the rough-bed log law"
+            << " (k_s " << layer->roughness() << " D, D "
+            << layer->roughnessDiameter() << " m) over the bed's zero plane"
+            << " (solid fraction " << layer->bedSolidFraction() << ") down"
+            << " to the crests " << layer->crestAboveZeroPlane() << " D"
+            << " above it, linear from there to the troughs "
+            << layer->layerDepth() << " D below the crests, anchored to the"
+            << " velocity of the cell above, averaged over the particle's"
+            << " exposed part (fluidVelocity roughnessLayer, Nikora et al."
+            << " 2004)" << endl;
+    }
+    if
+    (
+        velocity_ != velocitySource::bedSurfaceLogLaw
+     && dict.found("bedSurfaceLogLawCoeffs")
+    )
     {
         FatalIOErrorInFunction(dict)
             << "bedSurfaceLogLawCoeffs in " << dict.name() << " is read only"
@@ -122,9 +148,22 @@ Foam::demCoupling::fluidSampler::fluidSampler
             << velocitySourceNames[velocity_] << "): remove it, or set"
             << " fluidVelocity bedSurfaceLogLaw" << exit(FatalIOError);
     }
+    if
+    (
+        velocity_ != velocitySource::roughnessLayer
+     && dict.found("roughnessLayerCoeffs")
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "roughnessLayerCoeffs in " << dict.name() << " is read only"
+            << " with fluidVelocity roughnessLayer (this run's is "
+            << velocitySourceNames[velocity_] << "): remove it, or set"
+            << " fluidVelocity roughnessLayer" << exit(FatalIOError);
+    }
     const bool needUp =
         velocity_ == velocitySource::grainTop
      || velocity_ == velocitySource::bedSurfaceLogLaw
+     || velocity_ == velocitySource::roughnessLayer
      || needTopAndBottom_
      || dict.found("velocityFluctuation");
     if (needUp)
@@ -459,7 +498,11 @@ Foam::demCoupling::fluidSampler::sample
                 sampleAtHeight(U, tgradU(), particles, 0.5, Ui);
             }
         }
-        else if (velocity_ == velocitySource::bedSurfaceLogLaw)
+        else if
+        (
+            velocity_ == velocitySource::bedSurfaceLogLaw
+         || velocity_ == velocitySource::roughnessLayer
+        )
         {
             sampleBedSurfaceLogLaw(U, voidfraction, particles, Ui);
         }

@@ -940,7 +940,8 @@ def fractionsChart(outPng, entries):
             pts.append((settings(run)['theta'], rows[0]['p'], rows[0]['pWC'],
                         M, MWC))
         pts.sort()
-        c = 'C%d' % n
+        # matplotlib's ten colours, then black and grey (one each per entry)
+        c = ('C%d' % n if n < 10 else ('k', '0.5')[(n - 10) % 2])
         th = [p[0] for p in pts]
         axP.plot(th, [p[1] for p in pts], marks[n % len(marks)] + '-',
                  color=c, label=label)

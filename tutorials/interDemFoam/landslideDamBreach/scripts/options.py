@@ -111,10 +111,10 @@ def check_coupling(o, s):
     """-fluidVelocity, -minVoidFraction, -voidFractionFloor, -fluctuation,
     -eddyLifetime, -voidFraction."""
     if o['fluidVelocity'] not in ('', 'voidFractionAverage', 'cellPoint',
-                                  'grainTop'):
+                                  'grainTop', 'roughnessLayer'):
         raise OptionError("-fluidVelocity: use voidFractionAverage (the "
-                          "default), cellPoint or grainTop, got '%s'"
-                          % o['fluidVelocity'])
+                          "default), cellPoint, grainTop or roughnessLayer, "
+                          "got '%s'" % o['fluidVelocity'])
     if o['minVoidFraction'] and not number(o['minVoidFraction'],
                                            lambda v: 0 < v < 1):
         raise OptionError("-minVoidFraction takes the floor of the void "

@@ -214,6 +214,30 @@ if [ -n "$fluidVelocity" ]
 then
     foamDictionary -entry fluidVelocity -add "$fluidVelocity" "$dir"/constant/couplingProperties > /dev/null || return 1
 fi
+if [ "$fluidVelocity" = roughnessLayer ]
+then
+    # the flow between the crests (roughnessLayerLogLaw.H) over the dam's
+    # d84 by mass (DEM/in.material.<material>: both small dams 40 mm), with
+    # the bedload channel's roughness 2.9 D (case.turbulentBed), packing
+    # 0.56 (the dams' cores 0.557-0.584, results/grading.small.dat), crests
+    # 0.25 D above the zero plane and troughs 1 D below them
+    d84=$(/usr/bin/python3 - DEM/in.material.$materialFile <<'EOF2'
+import re, sys
+text = open(sys.argv[1]).read()
+radius = dict(re.findall(r'fix\s+(\S+)\s+all\s+particletemplate/sphere.*radius constant (\S+)', text))
+words = re.search(r'particledistribution/discrete\s+\S+\s+\d+\s+(.*)', text).group(1).split()
+classes = sorted((2*float(radius[words[i]]), float(words[i + 1])) for i in range(0, len(words), 2))
+total, cumulative = sum(f for d, f in classes), 0.0
+for d, f in classes:
+    cumulative += f/total
+    if cumulative >= 0.84 - 1e-9:
+        print('%g' % d)
+        break
+EOF2
+) && [ -n "$d84" ] || { echo "Allrun: no d84 from DEM/in.material.$materialFile for -fluidVelocity roughnessLayer"; return 1; }
+    foamDictionary -entry roughnessLayerCoeffs -add "{ roughness 2.9; bedSolidFraction 0.56; roughnessDiameter $d84; crestAboveZeroPlane 0.25; layerDepth 1; }" \
+        "$dir"/constant/couplingProperties > /dev/null || return 1
+fi
 if [ -n "$minVoidFraction" ]
 then
     foamDictionary -entry minVoidFraction -set "$minVoidFraction" "$dir"/constant/couplingProperties > /dev/null || return 1
