@@ -96,8 +96,8 @@ Foam::scalar Foam::demCoupling::bedSurfaceLogLaw::speedAt
 (
     const scalar z,
     const scalar zE,
+    const bool,
     const scalar z0,
-    const scalar,
     const scalar logAbove,
     const scalar magUabove
 ) const
@@ -120,13 +120,19 @@ Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
     const scalar solidHost,
     const scalar solidBelow,
     const vector& Uabove,
-    const vector& Uhost
+    const vector& Uhost,
+    const scalar solidAbove
 ) const
 {
     const scalar r = 0.5*d;
     const scalar zE = zeroPlane(zLow, zHigh, solidHost, solidBelow);
     const scalar z0 = roughnessLength(d);
-    const scalar zBottom = flowBottom(zE, d);
+    // The bed's surface within the host cell or the cell below (the zero
+    // plane below the host cell's top), or in the cell above (those two
+    // packed, the cell above not)
+    const bool surfaceInReach =
+        zE < zHigh || solidAbove < bedSolidFraction_;
+    const scalar zBottom = flowBottom(zE, surfaceInReach);
     const scalar zAbove = zHigh + 0.5*(zHigh - zLow);
     const scalar magUabove = mag(Uabove);
 
@@ -153,7 +159,8 @@ Foam::vector Foam::demCoupling::bedSurfaceLogLaw::velocity
         const scalar phi = phiLow + (i + 0.5)*dphi;
         const scalar u = speedAt
         (
-            zCentre - r*Foam::cos(phi), zE, z0, d, logAbove, magUabove
+            zCentre - r*Foam::cos(phi), zE, surfaceInReach, z0, logAbove,
+            magUabove
         );
         const scalar s = Foam::sin(phi);
         u2Area += sqr(u)*2*sqr(r)*sqr(s)*dphi;

@@ -388,7 +388,9 @@ void Foam::demCoupling::fluidSampler::sampleBedSurfaceLogLaw
                 1 - voidfraction[celli],
                 solidBelow,
                 valueInCellAbove(U, acrossU, celli, up_),
-                U[celli]
+                U[celli],
+                // the top of the domain counts as clear fluid
+                1 - valueInCellAbove(voidfraction, acrossEps, celli, up_, 1.0)
             );
         }
     );

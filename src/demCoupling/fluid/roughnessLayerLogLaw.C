@@ -120,9 +120,13 @@ Foam::scalar Foam::demCoupling::roughnessLayerLogLaw::roughnessLength
 Foam::scalar Foam::demCoupling::roughnessLayerLogLaw::flowBottom
 (
     const scalar zE,
-    const scalar
+    const bool surfaceInReach
 ) const
 {
+    if (!surfaceInReach)
+    {
+        return zE;
+    }
     return zE + (crestAboveZeroPlane_ - layerDepth_)*roughnessDiameter_;
 }
 
@@ -131,16 +135,19 @@ Foam::scalar Foam::demCoupling::roughnessLayerLogLaw::speedAt
 (
     const scalar z,
     const scalar zE,
+    const bool surfaceInReach,
     const scalar z0,
-    const scalar d,
     const scalar logAbove,
     const scalar magUabove
 ) const
 {
     const scalar zCrest = zE + crestAboveZeroPlane_*roughnessDiameter_;
-    if (z >= zCrest)
+    if (z >= zCrest || !surfaceInReach)
     {
-        return bedSurfaceLogLaw::speedAt(z, zE, z0, d, logAbove, magUabove);
+        return bedSurfaceLogLaw::speedAt
+        (
+            z, zE, surfaceInReach, z0, logAbove, magUabove
+        );
     }
     const scalar depth = layerDepth_*roughnessDiameter_;
     const scalar share = (z - (zCrest - depth))/depth;
@@ -148,7 +155,7 @@ Foam::scalar Foam::demCoupling::roughnessLayerLogLaw::speedAt
         share > 0
       ? share*bedSurfaceLogLaw::speedAt
         (
-            zCrest, zE, z0, d, logAbove, magUabove
+            zCrest, zE, surfaceInReach, z0, logAbove, magUabove
         )
       : 0;
 }

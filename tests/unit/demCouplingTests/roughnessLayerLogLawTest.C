@@ -9,7 +9,7 @@
 // 1 D below the crests (z_t = 0.03), k_s = 2.9 D (z0 = 1.933 mm):
 // - a grain much smaller than z0 sees, along U_a, the log law over D's z0
 //   above the crests (not its own diameter's: bedSurfaceLogLaw's 2.9 d/30
-//   would give 1.12 times more at z = 0.055), u(z_c) (z - z_t)/(z_c - z_t)
+//   would give 1.42 times more at z = 0.055), u(z_c) (z - z_t)/(z_c - z_t)
 //   between the troughs and the crests (0.75 of u(z_c) at the zero plane,
 //   where bedSurfaceLogLaw gives zero) and its host cell's velocity below
 //   the troughs;
@@ -25,6 +25,15 @@
 // - the pocketed 10 mm grain under bedSurfaceLogLaw sees its host cell's
 //   velocity alone, under roughnessLayer more than twice that: the layer
 //   is what gives it a flow;
+// - the host cell and the cell below packed (z_e at the host cell's
+//   top, 0.06): with the cell above packed too the grain is under the
+//   surface and the layer is off (a 10 mm grain wholly below z_e sees its
+//   host cell's velocity exactly, one reaching 3 mm above z_e the log law
+//   over D's z0 on that part and the host velocity on the rest, against
+//   the Simpson integral within 2e-3); with the surface in the cell above
+//   (solid 0.1) the layer runs from z_e = 0.06 (a 10 mm grain wholly
+//   below z_e sees its profile, within 2e-3, and more than twice its host
+//   velocity);
 // - missing or inconsistent coefficients stop with an error naming the
 //   keyword, and the sampler refuses the coefficients without the model
 //   and the model without them.
@@ -34,6 +43,7 @@
 #include "roughnessLayerLogLaw.H"
 #include "fluidSampler.H"
 #include "mathematicalConstants.H"
+#include <functional>
 
 using namespace Foam;
 using namespace Foam::demCoupling;
@@ -116,12 +126,14 @@ TEST(roughnessLayerLogLaw, SmallGrainSeesTheLayersProfile)
         const scalar expected = std::log(0.01/z0)/std::log((zA - zE)/z0);
         EXPECT_NEAR(mag(U), expected, 1e-3*expected);
         EXPECT_NEAR(U.x()/mag(U), 0.8, 1e-12);
-        // bedSurfaceLogLaw's own-diameter z0 gives 1.12 times more here
-        const scalar ownD = 2.9*d/30;
-        EXPECT_GT
+        // bedSurfaceLogLaw, its z0 from the grain's own diameter, gives
+        // 1.42 times more here
+        const bedSurfaceLogLaw logLaw(2.9, 0.56);
+        const vector Ulog
         (
-            std::log(0.01/ownD)/std::log((zA - zE)/ownD), 1.1*expected
+            logLaw.velocity(0.055, d, 0.04, 0.06, 0.14, 0.56, Ua, Uhost)
         );
+        EXPECT_GT(mag(Ulog), 1.3*mag(U));
     }
     // at the zero plane: 0.75 of the crests' speed (the log law: zero)
     {
@@ -185,6 +197,84 @@ TEST(roughnessLayerLogLaw, GrainsSeeTheDragEquivalentVelocity)
         ASSERT_NEAR(share, 0.5, 1e-12);
         const scalar speed = std::sqrt(sqr(exposed) + share*magSqr(Uhost));
         EXPECT_NEAR(mag(U), speed, 2e-3*speed);
+    }
+}
+
+
+TEST(roughnessLayerLogLaw, TheLayerFollowsTheSurface)
+{
+    const vector Ua(1.03, 0, 0);
+    const vector Uhost(0.05, 0, 0.02);
+    // host [0.04, 0.06] and the cell below packed: z_e = 0.06
+    const scalar zEb = 0.06;
+    ASSERT_NEAR(model().zeroPlane(0.04, 0.06, 0.56, 0.56), zEb, 1e-14);
+    auto velocityAt = [&](const scalar zc, const scalar solidAbove)
+    {
+        return model().velocity
+        (
+            zc, 0.01, 0.04, 0.06, 0.56, 0.56, Ua, Uhost, solidAbove
+        );
+    };
+    // sqrt(int u^2 w dz/A) over [bottom, top] of a 10 mm grain at zc,
+    // with the host velocity's share below bottom
+    auto expected = [&]
+    (
+        const scalar zc,
+        const scalar bottom,
+        const std::function<scalar(scalar)>& u
+    )
+    {
+        const scalar r = 0.005;
+        const label n = 20000;
+        const scalar a = std::max(zc - r, bottom), b = zc + r;
+        const scalar h = (b - a)/n;
+        scalar sum = 0;
+        for (label i = 0; i <= n; ++i)
+        {
+            const scalar z = a + i*h;
+            const scalar w =
+                2*std::sqrt(std::max(sqr(r) - sqr(z - zc), 0.0));
+            sum += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2))*sqr(u(z))*w;
+        }
+        return std::sqrt
+        (
+            sum*h/3/(constant::mathematical::pi*sqr(r))
+          + shelteredShare(zc, r, bottom)*magSqr(Uhost)
+        );
+    };
+    auto logLaw = [&](const scalar z)
+    {
+        return
+            z - zEb > z0
+          ? 1.03*std::min
+            (
+                std::log((z - zEb)/z0)/std::log((zA - zEb)/z0), 1.0
+            )
+          : 0.0;
+    };
+    // the cell above packed too: under the surface, no layer
+    {
+        EXPECT_EQ(velocityAt(0.05, 0.56), Uhost);
+        const scalar zc = 0.058;
+        const scalar speed = expected(zc, zEb, logLaw);
+        EXPECT_NEAR(mag(velocityAt(zc, 0.56)), speed, 2e-3*speed);
+    }
+    // the cell above holding the surface (solid 0.1): the layer from
+    // z_e = 0.06, crests at 0.065, troughs at 0.045
+    {
+        const scalar zCb = 0.065, zTb = 0.045;
+        auto layer = [&](const scalar z)
+        {
+            return
+                z >= zCb ? logLaw(z)
+              : z > zTb ? logLaw(zCb)*(z - zTb)/(zCb - zTb)
+              : 0.0;
+        };
+        const scalar zc = 0.05;
+        const scalar speed = expected(zc, zTb, layer);
+        const vector U(velocityAt(zc, 0.1));
+        EXPECT_NEAR(mag(U), speed, 2e-3*speed);
+        EXPECT_GT(mag(U), 2*mag(Uhost));
     }
 }
 

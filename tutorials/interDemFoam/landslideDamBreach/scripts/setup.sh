@@ -221,10 +221,11 @@ then
     # the bedload channel's roughness 2.9 D (case.turbulentBed), packing
     # 0.56 (the dams' cores 0.557-0.584, results/grading.small.dat), crests
     # 0.25 D above the zero plane and troughs 1 D below them
-    d84=$(/usr/bin/python3 - DEM/in.material.$materialFile <<'EOF2'
+    d84=$(/usr/bin/python3 - "DEM/in.material.$materialFile" <<'EOF2'
 import re, sys
-text = open(sys.argv[1]).read()
-radius = dict(re.findall(r'fix\s+(\S+)\s+all\s+particletemplate/sphere.*radius constant (\S+)', text))
+# the LIGGGHTS commands, comments dropped
+text = '\n'.join(l.split('#')[0] for l in open(sys.argv[1]).read().splitlines())
+radius = dict(re.findall(r'fix\s+(\S+)\s+all\s+particletemplate/sphere\b.*?\bradius\s+constant\s+(\S+)', text))
 words = re.search(r'particledistribution/discrete\s+\S+\s+\d+\s+(.*)', text).group(1).split()
 classes = sorted((2*float(radius[words[i]]), float(words[i + 1])) for i in range(0, len(words), 2))
 total, cumulative = sum(f for d, f in classes), 0.0
