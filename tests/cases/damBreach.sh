@@ -36,6 +36,9 @@
 #     the findings-against-cost chart reads made-up matrices right (each
 #     sample's count held and the CPU time of its eight runs; a matrix with
 #     a run missing skipped; negative control: sample a's count given to b);
+#   - -fluidVelocity roughnessLayer writes fluidVelocity roughnessLayer
+#     and roughnessLayerCoeffs with the C dam's d84 by mass, 0.04 m (the
+#     default run has none: the negative control of the read);
 #   - -parallel 2 writes the DEM grid bin/demGrid chooses from the dam's
 #     grains (-demGrid auto), the serial run LIGGGHTS's "* * *";
 #   - the mass budget (damBreachAnalysis.py budget) starts from the poured
@@ -434,6 +437,21 @@ fluctuationOf() { foamDictionary -entry "velocityFluctuation/$2" -value "$1/cons
     && fail "-eddyLifetime turnover without -fluctuation turbulence ran (log.Allrun.turnoverLam)"
 grep -q "^Allrun: -eddyLifetime is how long a grain keeps an eddy" log.Allrun.turnoverLam \
     || fail "-eddyLifetime without -fluctuation turbulence did not stop with the option named (log.Allrun.turnoverLam)"
+
+# -fluidVelocity roughnessLayer (the flow between the crests) writes the
+# model and its coefficients with the dam's d84 by mass (C: 40 mm); the
+# default run has no roughnessLayerCoeffs (the negative control of the read)
+./Allrun -scenario C4 -fluidVelocity roughnessLayer -tag layer -endTime 1 -setupOnly > log.Allrun.layer 2>&1 \
+    || { tail -5 log.Allrun.layer; fail "Allrun -fluidVelocity roughnessLayer -setupOnly failed"; }
+layerOf() { foamDictionary -entry "$2" -value "$1/constant/couplingProperties" 2>/dev/null; }
+layerD=$(layerOf C4.small.layer roughnessLayerCoeffs/roughnessDiameter)
+echo "-fluidVelocity roughnessLayer: fluidVelocity $(layerOf C4.small.layer fluidVelocity), roughnessDiameter $layerD m (the C dam's d84, 0.04)"
+[ "$(layerOf C4.small.layer fluidVelocity)" = roughnessLayer ] \
+    || fail "-fluidVelocity roughnessLayer wrote fluidVelocity '$(layerOf C4.small.layer fluidVelocity)'"
+check "roughnessLayer's roughness diameter" "$layerD" 'v == 0.04' \
+    "-fluidVelocity roughnessLayer wrote roughnessDiameter $layerD, not the C dam's d84 0.04 m"
+[ -z "$(layerOf "$case" roughnessLayerCoeffs/roughnessDiameter)" ] \
+    || fail "the default run's couplingProperties has roughnessLayerCoeffs (negative control of the read)"
 
 # the mass budget's first row against the dam's mass in the grading file
 damMassOf() { sed -n "s/^# $1: [0-9]* grains, \([0-9.]*\) kg.*/\1/p" results/grading.small.dat; }
