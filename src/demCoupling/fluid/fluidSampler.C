@@ -136,29 +136,22 @@ Foam::demCoupling::fluidSampler::fluidSampler
             << " exposed part (fluidVelocity roughnessLayer, Nikora et al."
             << " 2004)" << endl;
     }
-    if
+    // Each log law's coefficients are read only with its model
+    for
     (
-        velocity_ != velocitySource::bedSurfaceLogLaw
-     && dict.found("bedSurfaceLogLawCoeffs")
+        const velocitySource withCoeffs
+      : {velocitySource::bedSurfaceLogLaw, velocitySource::roughnessLayer}
     )
     {
-        FatalIOErrorInFunction(dict)
-            << "bedSurfaceLogLawCoeffs in " << dict.name() << " is read only"
-            << " with fluidVelocity bedSurfaceLogLaw (this run's is "
-            << velocitySourceNames[velocity_] << "): remove it, or set"
-            << " fluidVelocity bedSurfaceLogLaw" << exit(FatalIOError);
-    }
-    if
-    (
-        velocity_ != velocitySource::roughnessLayer
-     && dict.found("roughnessLayerCoeffs")
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "roughnessLayerCoeffs in " << dict.name() << " is read only"
-            << " with fluidVelocity roughnessLayer (this run's is "
-            << velocitySourceNames[velocity_] << "): remove it, or set"
-            << " fluidVelocity roughnessLayer" << exit(FatalIOError);
+        const word model(velocitySourceNames[withCoeffs]);
+        if (velocity_ != withCoeffs && dict.found(model + "Coeffs"))
+        {
+            FatalIOErrorInFunction(dict)
+                << model << "Coeffs in " << dict.name() << " is read only"
+                << " with fluidVelocity " << model << " (this run's is "
+                << velocitySourceNames[velocity_] << "): remove it, or set"
+                << " fluidVelocity " << model << exit(FatalIOError);
+        }
     }
     const bool needUp =
         velocity_ == velocitySource::grainTop
