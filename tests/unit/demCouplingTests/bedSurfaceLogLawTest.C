@@ -216,15 +216,10 @@ TEST(bedSurfaceLogLaw, SamplerRefusesCoefficientsWithoutTheModel)
     const PtrList<forceModel> forces;
     auto messageOf = [&](const dictionary& dict)
     {
-        try
-        {
-            fluidSampler sampler(dict, mesh, forces);
-        }
-        catch (const Foam::error& err)
-        {
-            return std::string(err.message());
-        }
-        return std::string();
+        return testing_demCoupling::errorMessage
+        (
+            [&]{ fluidSampler sampler(dict, mesh, forces); }
+        );
     };
 
     dictionary stray;

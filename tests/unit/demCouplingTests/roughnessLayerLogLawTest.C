@@ -283,15 +283,10 @@ TEST(roughnessLayerLogLaw, BadCoefficientsStop)
 {
     auto messageOf = [](const dictionary& dict)
     {
-        try
-        {
-            roughnessLayerLogLaw model(dict);
-        }
-        catch (const Foam::error& err)
-        {
-            return std::string(err.message());
-        }
-        return std::string();
+        return testing_demCoupling::errorMessage
+        (
+            [&]{ roughnessLayerLogLaw model(dict); }
+        );
     };
     dictionary none;
     EXPECT_NE
@@ -332,15 +327,10 @@ TEST(roughnessLayerLogLaw, SamplerRefusesCoefficientsWithoutTheModel)
     const PtrList<forceModel> forces;
     auto messageOf = [&](const dictionary& dict)
     {
-        try
-        {
-            fluidSampler sampler(dict, mesh, forces);
-        }
-        catch (const Foam::error& err)
-        {
-            return std::string(err.message());
-        }
-        return std::string();
+        return testing_demCoupling::errorMessage
+        (
+            [&]{ fluidSampler sampler(dict, mesh, forces); }
+        );
     };
     dictionary stray;
     stray.add("fluidVelocity", "grainTop");
