@@ -9,7 +9,7 @@ import os
 import numpy as np
 
 from .figures import pyplot
-from .summary import read_summary
+from .summary import last_tenth, read_summary
 
 
 def compare(out, cases):
@@ -59,7 +59,6 @@ def equal_time(cases):
                                    'residual [m]'))
     for case, d in data:
         t, h = d[:, 0], d[:, 1]
-        window = (t >= 0.9*end) & (t <= end)
-        tail = t >= 0.9*t[-1]
+        window, tail = last_tenth(t, end), last_tenth(t)
         print('%-24s %8.1f %10.4f %12.4f' % (case, t[-1], h[window].mean(),
                                              h[tail].mean()))

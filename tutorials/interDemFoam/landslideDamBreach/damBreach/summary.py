@@ -91,11 +91,19 @@ def write_profiles(case, centres, profiles):
     return [profiles[i] for i in pick]
 
 
+def last_tenth(t, end=None):
+    """The rows of times t in the last 10 % of [t[0], end] (end: t's last
+    time unless given): the window of the residual height and of the
+    mean outflow, and of compare.equal_time's common time."""
+    end = t[-1] if end is None else end
+    return (t >= t[0] + 0.9*(end - t[0])) & (t <= end)
+
+
 def summary_values(rows, rate, freeboard, wb, dumps):
     """The quantities of damBreach.summary, in its order."""
     t, height = rows[:, 0], rows[:, 1]
     e0 = rows[0, 2]
-    tail = t >= t[0] + 0.9*(t[-1] - t[0])
+    tail = last_tenth(t)
     summary = {
         'end time [s]': t[-1],
         'initial dam height H0 [m]': height[0],
@@ -120,8 +128,8 @@ def summary_values(rows, rate, freeboard, wb, dumps):
             'water out, top [m3]': wb['vtop'],
             'storage change [m3]': wb['dstore'],
             'water balance error (in - out - storage)/in [%]': 100*wb['error'],
-            'mean outflow, last 10 % [m3/s]': np.mean(
-                wb['qout'][wb['t'] >= wb['t'][0] + 0.9*(wb['t'][-1] - wb['t'][0])]),
+            'mean outflow, last 10 % [m3/s]':
+                np.mean(wb['qout'][last_tenth(wb['t'])]),
         })
     return summary
 
