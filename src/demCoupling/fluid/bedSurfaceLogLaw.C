@@ -35,12 +35,7 @@ Foam::demCoupling::bedSurfaceLogLaw::bedSurfaceLogLaw
     (
         coeffs, "roughness", &inputCheck::positive, "> 0 (k_s/d)"
     );
-    bedSolidFraction_ = inputCheck::get<scalar>
-    (
-        coeffs, "bedSolidFraction",
-        [](const scalar v) { return v > 0 && v < 1; },
-        "between 0 and 1, both excluded (1 - eps in the packed bed)"
-    );
+    bedSolidFraction_ = readBedSolidFraction(coeffs);
 }
 
 
@@ -56,6 +51,20 @@ Foam::demCoupling::bedSurfaceLogLaw::bedSurfaceLogLaw
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::demCoupling::bedSurfaceLogLaw::readBedSolidFraction
+(
+    const dictionary& coeffs
+)
+{
+    return inputCheck::get<scalar>
+    (
+        coeffs, "bedSolidFraction",
+        [](const scalar v) { return v > 0 && v < 1; },
+        "between 0 and 1, both excluded (1 - eps in the packed bed)"
+    );
+}
+
 
 void Foam::demCoupling::bedSurfaceLogLaw::verticalExtent
 (

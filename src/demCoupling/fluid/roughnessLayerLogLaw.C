@@ -42,6 +42,49 @@ Foam::scalar positiveOf(const Foam::dictionary& coeffs, const char* key)
     );
 }
 
+// The model from couplingProperties' roughnessLayerCoeffs, each keyword
+// checked, then the crests above z0 and the troughs at or below the zero
+// plane
+Foam::demCoupling::roughnessLayerLogLaw checkedModel
+(
+    const Foam::dictionary& couplingDict
+)
+{
+    using namespace Foam;
+    using namespace Foam::demCoupling;
+    const dictionary& coeffs = coeffsOf(couplingDict);
+    const scalar roughness = positiveOf(coeffs, "roughness");
+    const scalar bedSolidFraction =
+        bedSurfaceLogLaw::readBedSolidFraction(coeffs);
+    const scalar roughnessDiameter = positiveOf(coeffs, "roughnessDiameter");
+    const scalar crest = positiveOf(coeffs, "crestAboveZeroPlane");
+    const scalar depth = positiveOf(coeffs, "layerDepth");
+    if (crest <= roughness/30)
+    {
+        inputCheck::notAllowed
+        (
+            coeffs, "crestAboveZeroPlane", crest,
+            "above z0/D = roughness/30 = "
+          + std::to_string(roughness/30)
+          + " (the crests in the log law's range)"
+        );
+    }
+    if (depth < crest)
+    {
+        inputCheck::notAllowed
+        (
+            coeffs, "layerDepth", depth,
+            "at least crestAboveZeroPlane = "
+          + std::to_string(crest)
+          + " (the troughs at or below the zero plane)"
+        );
+    }
+    return roughnessLayerLogLaw
+    (
+        roughness, bedSolidFraction, roughnessDiameter, crest, depth
+    );
+}
+
 } // End anonymous namespace
 
 
@@ -52,42 +95,8 @@ Foam::demCoupling::roughnessLayerLogLaw::roughnessLayerLogLaw
     const dictionary& couplingDict
 )
 :
-    roughnessLayerLogLaw
-    (
-        positiveOf(coeffsOf(couplingDict), "roughness"),
-        inputCheck::get<scalar>
-        (
-            coeffsOf(couplingDict), "bedSolidFraction",
-            [](const scalar v) { return v > 0 && v < 1; },
-            "between 0 and 1, both excluded (1 - eps in the packed bed)"
-        ),
-        positiveOf(coeffsOf(couplingDict), "roughnessDiameter"),
-        positiveOf(coeffsOf(couplingDict), "crestAboveZeroPlane"),
-        positiveOf(coeffsOf(couplingDict), "layerDepth")
-    )
-{
-    const dictionary& coeffs = coeffsOf(couplingDict);
-    if (crestAboveZeroPlane_ <= roughness()/30)
-    {
-        inputCheck::notAllowed
-        (
-            coeffs, "crestAboveZeroPlane", crestAboveZeroPlane_,
-            "above z0/D = roughness/30 = "
-          + std::to_string(roughness()/30)
-          + " (the crests in the log law's range)"
-        );
-    }
-    if (layerDepth_ < crestAboveZeroPlane_)
-    {
-        inputCheck::notAllowed
-        (
-            coeffs, "layerDepth", layerDepth_,
-            "at least crestAboveZeroPlane = "
-          + std::to_string(crestAboveZeroPlane_)
-          + " (the troughs at or below the zero plane)"
-        );
-    }
-}
+    roughnessLayerLogLaw(checkedModel(couplingDict))
+{}
 
 
 Foam::demCoupling::roughnessLayerLogLaw::roughnessLayerLogLaw

@@ -314,8 +314,16 @@ TEST(roughnessLayerLogLaw, BadCoefficientsStop)
     dict.subDictPtr("roughnessLayerCoeffs")->set("crestAboveZeroPlane", 0.25);
     dict.subDictPtr("roughnessLayerCoeffs")->set("layerDepth", 0.2);
     EXPECT_NE(messageOf(dict).find("layerDepth"), std::string::npos);
-    // a misspelt keyword
+    // the solid fraction outside (0, 1), read by bedSurfaceLogLaw's reader
     dict.subDictPtr("roughnessLayerCoeffs")->set("layerDepth", 1.0);
+    dict.subDictPtr("roughnessLayerCoeffs")->set("bedSolidFraction", 1.2);
+    EXPECT_NE
+    (
+        messageOf(dict).find("between 0 and 1"),
+        std::string::npos
+    );
+    dict.subDictPtr("roughnessLayerCoeffs")->set("bedSolidFraction", 0.56);
+    // a misspelt keyword
     dict.subDictPtr("roughnessLayerCoeffs")->add("roughnesDiameter", 0.02);
     EXPECT_NE(messageOf(dict).find("roughnesDiameter"), std::string::npos);
 }
