@@ -317,11 +317,9 @@ TEST(roughnessLayerLogLaw, BadCoefficientsStop)
     // the solid fraction outside (0, 1), read by bedSurfaceLogLaw's reader
     dict.subDictPtr("roughnessLayerCoeffs")->set("layerDepth", 1.0);
     dict.subDictPtr("roughnessLayerCoeffs")->set("bedSolidFraction", 1.2);
-    EXPECT_NE
-    (
-        messageOf(dict).find("between 0 and 1"),
-        std::string::npos
-    );
+    const std::string fractionMessage(messageOf(dict));
+    EXPECT_NE(fractionMessage.find("bedSolidFraction"), std::string::npos);
+    EXPECT_NE(fractionMessage.find("between 0 and 1"), std::string::npos);
     dict.subDictPtr("roughnessLayerCoeffs")->set("bedSolidFraction", 0.56);
     // a misspelt keyword
     dict.subDictPtr("roughnessLayerCoeffs")->add("roughnesDiameter", 0.02);

@@ -48,8 +48,9 @@ def compare(out, cases):
 def equal_time(cases):
     """The dam heights of several runs at the same time: T, the earliest
     of their end times, and each run's mean height over the last 10 % of
-    [0, T], as damBreach.summary takes its residual height over the last
-    10 % of its own run. Runs that end at different times (the run length
+    [t0, T] (t0 its first time, 0 in every run: the dam's restart starts
+    the clock), as damBreach.summary takes its residual height over the
+    last 10 % of its own run. Runs that end at different times (the run length
     follows the breach, Allrun) compare there as they stood together."""
     data = [(c, np.loadtxt(os.path.join(c, 'damBreach.dat'))) for c in cases]
     end = min(d[-1, 0] for _, d in data)
