@@ -54,28 +54,45 @@ namespace
 const scalar D = 0.02, zE = 0.045, zA = 0.07, zC = 0.05, zT = 0.03;
 const scalar z0 = 2.9*D/30;
 
-// The header's profile, written out independently
-scalar profile(const scalar z, const scalar uA)
+// The header's log law over D's z0 above the zero plane ze, anchored to
+// uA at zA, written out independently
+scalar logLawSpeed(const scalar z, const scalar uA, const scalar ze)
 {
-    auto logLaw = [&](const scalar zz)
-    {
-        return
-            zz - zE > z0
-          ? uA*std::min(std::log((zz - zE)/z0)/std::log((zA - zE)/z0), 1.0)
-          : 0.0;
-    };
-    if (z >= zC)
-    {
-        return logLaw(z);
-    }
-    return z > zT ? logLaw(zC)*(z - zT)/(zC - zT) : 0.0;
+    return
+        z - ze > z0
+      ? uA*std::min(std::log((z - ze)/z0)/std::log((zA - ze)/z0), 1.0)
+      : 0.0;
 }
 
-// sqrt(int over the part of a grain (centre zc, radius r) above the
-// troughs of u(z)^2 w(z) dz / (pi r^2)), by Simpson's rule in height
-scalar dragEquivalent(const scalar zc, const scalar r, const scalar uA)
+// The header's profile: that log law above the crests zc, linear down to
+// the troughs zt, nothing below them
+scalar profile
+(
+    const scalar z,
+    const scalar uA,
+    const scalar ze = zE,
+    const scalar zc = zC,
+    const scalar zt = zT
+)
 {
-    const scalar a = std::max(zc - r, zT);
+    if (z >= zc)
+    {
+        return logLawSpeed(z, uA, ze);
+    }
+    return z > zt ? logLawSpeed(zc, uA, ze)*(z - zt)/(zc - zt) : 0.0;
+}
+
+// sqrt(int over the part of a grain (centre zc, radius r) above bottom of
+// u(z)^2 w(z) dz / (pi r^2)), by Simpson's rule in height
+scalar dragEquivalent
+(
+    const scalar zc,
+    const scalar r,
+    const scalar bottom,
+    const std::function<scalar(scalar)>& u
+)
+{
+    const scalar a = std::max(zc - r, bottom);
     const scalar b = zc + r;
     const label n = 20000;
     const scalar h = (b - a)/n;
@@ -84,9 +101,18 @@ scalar dragEquivalent(const scalar zc, const scalar r, const scalar uA)
     {
         const scalar z = a + i*h;
         const scalar w = 2*std::sqrt(std::max(sqr(r) - sqr(z - zc), 0.0));
-        sum += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2))*sqr(profile(z, uA))*w;
+        sum += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2))*sqr(u(z))*w;
     }
     return std::sqrt(sum*h/3/(constant::mathematical::pi*sqr(r)));
+}
+
+// That integral of the profile over the troughs zT
+scalar dragEquivalent(const scalar zc, const scalar r, const scalar uA)
+{
+    return dragEquivalent
+    (
+        zc, r, zT, [uA](const scalar z) { return profile(z, uA); }
+    );
 }
 
 // The sheltered share of a grain's cross-section below height zb
@@ -215,8 +241,8 @@ TEST(roughnessLayerLogLaw, TheLayerFollowsTheSurface)
             zc, 0.01, 0.04, 0.06, 0.56, 0.56, Ua, Uhost, solidAbove
         );
     };
-    // sqrt(int u^2 w dz/A) over [bottom, top] of a 10 mm grain at zc,
-    // with the host velocity's share below bottom
+    // the drag-equivalent speed of a 10 mm grain at zc: u over its part
+    // above bottom, the host velocity's share below it
     auto expected = [&]
     (
         const scalar zc,
@@ -225,38 +251,18 @@ TEST(roughnessLayerLogLaw, TheLayerFollowsTheSurface)
     )
     {
         const scalar r = 0.005;
-        const label n = 20000;
-        const scalar a = std::max(zc - r, bottom), b = zc + r;
-        const scalar h = (b - a)/n;
-        scalar sum = 0;
-        for (label i = 0; i <= n; ++i)
-        {
-            const scalar z = a + i*h;
-            const scalar w =
-                2*std::sqrt(std::max(sqr(r) - sqr(z - zc), 0.0));
-            sum += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2))*sqr(u(z))*w;
-        }
         return std::sqrt
         (
-            sum*h/3/(constant::mathematical::pi*sqr(r))
+            sqr(dragEquivalent(zc, r, bottom, u))
           + shelteredShare(zc, r, bottom)*magSqr(Uhost)
         );
     };
-    auto logLaw = [&](const scalar z)
-    {
-        return
-            z - zEb > z0
-          ? 1.03*std::min
-            (
-                std::log((z - zEb)/z0)/std::log((zA - zEb)/z0), 1.0
-            )
-          : 0.0;
-    };
+    auto logLawHere = [&](const scalar z) { return logLawSpeed(z, 1.03, zEb); };
     // the cell above packed too: under the surface, no layer
     {
         EXPECT_EQ(velocityAt(0.05, 0.56), Uhost);
         const scalar zc = 0.058;
-        const scalar speed = expected(zc, zEb, logLaw);
+        const scalar speed = expected(zc, zEb, logLawHere);
         EXPECT_NEAR(mag(velocityAt(zc, 0.56)), speed, 2e-3*speed);
     }
     // the cell above holding the surface (solid 0.1): the layer from
@@ -265,10 +271,7 @@ TEST(roughnessLayerLogLaw, TheLayerFollowsTheSurface)
         const scalar zCb = 0.065, zTb = 0.045;
         auto layer = [&](const scalar z)
         {
-            return
-                z >= zCb ? logLaw(z)
-              : z > zTb ? logLaw(zCb)*(z - zTb)/(zCb - zTb)
-              : 0.0;
+            return profile(z, 1.03, zEb, zCb, zTb);
         };
         const scalar zc = 0.05;
         const scalar speed = expected(zc, zTb, layer);
