@@ -8,7 +8,7 @@
 # goes on while, over the last 20 s, the dam height changed by 5 mm or
 # more or the total energy [E] by 0.02 or more (grains still leave the
 # dam), and stops at the longest run (Allrun
-# -maxTime, default 200 s at small scale) saying NOT ENDED. Seconds, no
+# -maxTime, default 300 s at small scale) saying NOT ENDED. Seconds, no
 # solver: the rule is applied to synthetic LIGGGHTS dumps (every 0.5 s, g
 # straight down) of one light crest grain (1 g) whose top is the dam height
 # H(t), a straight line, above 100 resting grains of 10 g centred at 0.1 m,
@@ -23,6 +23,11 @@
 #   - height steady, [E] 0.010 over 20 s at 80 s: the breach has ended;
 #   - 10 mm over 20 s at 100 s, longest run 100 s: stop, NOT ENDED;
 #   - the same at 100 s with -maxTime 200: still changing (go on);
+#   - the same with a DEM step of 9e-5 s, the dumps' times a step's
+#     round-off short of each half second (the last at 99.99999 s, as a
+#     matrix's sample b with steps 10 % shorter ends at 199.99989 s):
+#     stop, NOT ENDED (the longest run is reached within half a dump
+#     interval);
 #   - a 10 s run (shorter than the 20 s window): goes on with -maxTime
 #     200, stops NOT ENDED with -maxTime 10;
 #   - every grain gone: the dumps from 78 s on hold no grain (height 0: 250
@@ -35,7 +40,9 @@
 # (damBreach/ended.py) is changed: with both
 # tolerances ignored (every run "ended"), with the [E] tolerance ignored
 # (grains leaving do not count), with the longest run ignored (a run
-# never stops; for a run shorter than the window too), with the emptied
+# never stops; for a run shorter than the window too), with the longest
+# run reached only to 1e-6 s (the run with the DEM step of 9e-5 s goes
+# on past it, as the matrix's sample b did to 220 s), with the emptied
 # mark ignored (an empty flume judged by its height) and with
 # the marks sorted as text.
 # Reference: the height and [E] changes built into the synthetic dumps
@@ -50,23 +57,26 @@ mkdir -p "$runDir/breachEnded"
 cd "$runDir/breachEnded" || fail "cannot enter $runDir/breachEnded"
 
 # synthCase <name> <end time s> <lowering rate m/s> <period s (0: none)>
-#           [<time s from which the dumps are empty>]:
+#           [<time s from which the dumps are empty> [<DEM step s>]]:
 # the crest grain's top H(t) = 0.25 - rate t above 100 - floor(t/period)
-# resting grains
+# resting grains; a dump every 0.5 s at the step nearest it (a DEM step
+# other than 1e-4 s: the step below it, as the solver's dumps fall a
+# step's round-off short)
 synthCase()
 {
     mkdir -p "$1/DEM" "$1/post" "$1/constant"
-    echo "variable demDt index 1e-4" > "$1/DEM/in.case"
+    echo "variable demDt index ${6:-1e-4}" > "$1/DEM/in.case"
     echo "value ( 0 0 -9.81 );" > "$1/constant/g"
     /usr/bin/python3 - "$@" <<'EOF' || fail "cannot write the dumps of $1"
 import sys
 case = sys.argv[1]
 t_end, rate, period = (float(v) for v in sys.argv[2:5])
 t_gone = float(sys.argv[5]) if len(sys.argv) > 5 else 1e9
+dt = float(sys.argv[6]) if len(sys.argv) > 6 else 1e-4
 r = 0.01
 for k in range(int(round(t_end/0.5)) + 1):
     t = 0.5*k
-    step = int(round(t/1e-4))
+    step = int(round(t/dt)) if dt == 1e-4 else int(t/dt)
     top = 0.25 - rate*t
     n = 100 - (int(t/period + 1e-9) if period > 0 else 0)
     rows = ['1 %g 0.001 3.5 0.05 %.9f 0 0 0' % (r, top - r)]
@@ -85,6 +95,7 @@ synthCase slowing80 80 0.00015 0
 synthCase losing80 80 0 4
 synthCase shedding80 80 0 20
 synthCase changing100 100 0.0005 0
+synthCase changing100drift 100 0.0005 0 1e9 9e-5
 synthCase short10 10 0.0005 0
 synthCase emptied80 80 0 0 78
 mkdir -p emptied80/78 && touch emptied80/78/liggghts.restart.emptied
@@ -95,7 +106,7 @@ do
     touch emptiedRanks100/processor0/$t/liggghts.restart.emptied
 done
 
-# ruleChecks <analysis script>: the eight cases of the header
+# ruleChecks <analysis script>: the cases of the header
 ruleChecks()
 {
     local py="$1" out rc change
@@ -122,6 +133,7 @@ ruleChecks()
     expect shedding80 100 0 0.0 0.010 'the breach has ended'
     expect changing100 100 0 10.0 0.000 'NOT ENDED'
     expect changing100 200 1 10.0 0.000 'still changing'
+    expect changing100drift 100 0 10.0 0.000 'NOT ENDED'
     # gone <case> <the mark it must name>
     gone()
     {
@@ -163,14 +175,15 @@ mutant()
         && fail "negative control $1: the rule's line was not found"
 }
 
-# negative controls: the rule broken in five ways must fail the checks
+# negative controls: the rule broken in six ways must fail the checks
 rule="level = state\['height_change'\] < tolerance and state\['energy_change'\] < energy_tolerance"
 mutant noTolerance "s/$rule/level = True/"
 mutant noEnergy "s/$rule/level = state['height_change'] < tolerance/"
-mutant noLongestRun "s/state\['t_end'\] >= max_time - 1e-6/False/"
+mutant noLongestRun "s/if not done and reached(case, state\['t_end'\], max_time):/if False:/"
+mutant exactLongestRun "s/t_end >= max_time - 0.5\*interval - 1e-9/t_end >= max_time - 1e-6/"
 mutant noEmptied "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/"
 mutant textOrder 's/key=time_of)/)/'
-for broken in noTolerance noEnergy noLongestRun noEmptied textOrder
+for broken in noTolerance noEnergy noLongestRun exactLongestRun noEmptied textOrder
 do
     msg=$( (ruleChecks $broken/damBreachAnalysis.py) 2>&1 ) \
         && fail "the checks pass with the rule broken ($broken)"
@@ -178,4 +191,4 @@ do
 done
 
 ruleChecks "$analysis"
-pass "the run goes on at 10 mm or [E] 0.050 over 20 s, stops at 3 mm and [E] 0.010 over 20 s, stops NOT ENDED at the longest run (100 s; not at -maxTime 200), and stops when every grain has gone, naming the earliest mark"
+pass "the run goes on at 10 mm or [E] 0.050 over 20 s, stops at 3 mm and [E] 0.010 over 20 s, stops NOT ENDED at the longest run (100 s, also when the dumps fall a DEM step's round-off short of it; not at -maxTime 200), and stops when every grain has gone, naming the earliest mark"

@@ -32,8 +32,8 @@ copyTutorial landslideDamBreach breachResumeRun
 rm -f DEM/dam.*.restart                        # pour the dam too
 # pieces of seconds: first piece 2 s, then 2 s each, writes every 1 s (the
 # run's lengths per scale: Allrun's scripts/options.py)
-sed -i "s/defaultLake='0.15', defaultEnd='60', maxEnd='200'/defaultLake='0.15', defaultEnd='2', maxEnd='200'/; s/^PIECE_LENGTH = '20' /PIECE_LENGTH = '2' /" scripts/options.py
-grep -q "defaultEnd='2', maxEnd='200'" scripts/options.py && grep -q "^PIECE_LENGTH = '2' " scripts/options.py \
+sed -i "s/defaultLake='0.15', defaultEnd='60', maxEnd='300'/defaultLake='0.15', defaultEnd='2', maxEnd='300'/; s/^PIECE_LENGTH = '20' /PIECE_LENGTH = '2' /" scripts/options.py
+grep -q "defaultEnd='2', maxEnd='300'" scripts/options.py && grep -q "^PIECE_LENGTH = '2' " scripts/options.py \
     || fail "could not shorten the pieces in scripts/options.py (the lines to change were not found)"
 foamDictionary -entry writeInterval -set 1 system/controlDict > /dev/null \
     || fail "could not set writeInterval in system/controlDict"

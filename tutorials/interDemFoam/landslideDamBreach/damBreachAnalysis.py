@@ -9,7 +9,7 @@
     damBreachAnalysis.py grading BUILD [--out FILE] [--grains FILE]
                                               the grading of a poured dam
     damBreachAnalysis.py ended CASE [--window 20] [--tolerance 0.005]
-                               [--energyTolerance 0.02] [--maxTime 200]
+                               [--energyTolerance 0.02] [--maxTime 300]
                                               exit 0 when the run should stop:
                                               the breach has ended (H and [E]
                                               level over the window) or the

@@ -27,7 +27,7 @@ def ended_command(args):
     ap.add_argument('--tolerance', type=float, default=ended.ENDED_HEIGHT)
     ap.add_argument('--energyTolerance', type=float,
                     default=ended.LEVEL_ENERGY)
-    ap.add_argument('--maxTime', type=float, default=200.0)
+    ap.add_argument('--maxTime', type=float, default=300.0)
     a = ap.parse_args(args)
     return 0 if ended.ended(a.case, a.window, a.tolerance, a.maxTime,
                             a.energyTolerance) else 1

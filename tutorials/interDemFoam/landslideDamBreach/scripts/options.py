@@ -23,7 +23,7 @@ import sys
 # and the longest run of "until the breach has ended" (s)
 SCALES = {
     'small': dict(width='0.1', nCells='2', sides='cyclic', yBoundary='p', sideWalls='0',
-                  defaultLake='0.15', defaultEnd='60', maxEnd='200'),
+                  defaultLake='0.15', defaultEnd='60', maxEnd='300'),
     'full': dict(width='0.5', nCells='10', sides='wall', yBoundary='f', sideWalls='1',
                  defaultLake='', defaultEnd='200', maxEnd='600'),
 }
