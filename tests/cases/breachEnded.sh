@@ -23,11 +23,13 @@
 #   - height steady, [E] 0.010 over 20 s at 80 s: the breach has ended;
 #   - 10 mm over 20 s at 100 s, longest run 100 s: stop, NOT ENDED;
 #   - the same at 100 s with -maxTime 200: still changing (go on);
-#   - the same with a DEM step of 9e-5 s, the dumps' times a step's
-#     round-off short of each half second (the last at 99.99999 s, as a
-#     matrix's sample b with steps 10 % shorter ends at 199.99989 s):
-#     stop, NOT ENDED (the longest run is reached within half a dump
-#     interval);
+#   - the same with a DEM step of 9e-5 s, dumped as the solver dumps,
+#     every round(0.5/9e-5) = 5556 steps (0.50004 s), so that the last
+#     dump is at 99.508 s, 0.49 s short of the piece's end (as a
+#     matrix's sample b, whose last dump before 200 s is at 199.516 s):
+#     with the piece's end given as Allrun gives it (--pieceEnd 100), stop,
+#     NOT ENDED; by hand, without it (the piece taken to end within a dump
+#     interval after the last dump), the same;
 #   - a 10 s run (shorter than the 20 s window): goes on with -maxTime
 #     200, stops NOT ENDED with -maxTime 10;
 #   - every grain gone: the dumps from 78 s on hold no grain (height 0: 250
@@ -41,10 +43,15 @@
 # tolerances ignored (every run "ended"), with the [E] tolerance ignored
 # (grains leaving do not count), with the longest run ignored (a run
 # never stops; for a run shorter than the window too), with the longest
-# run reached only to 1e-6 s (the run with the DEM step of 9e-5 s goes
-# on past it, as the matrix's sample b did to 220 s), with the emptied
+# run judged by the last dump's time (the run with the DEM step of 9e-5
+# s goes on past it, as the matrix's sample b did to 220 s), with the emptied
 # mark ignored (an empty flume judged by its height) and with
 # the marks sorted as text.
+# And the dumps the deposit and budget tables take every 20 s
+# (damBreach/deposit.py): on the run with the DEM step of 9e-5 s, the dump
+# nearest each multiple (0, 20.0, 40.0, 60.0, 80.0 s) and the last (99.5
+# s); negative control: a copy matching the multiples within 1e-6 s (the
+# rule until December 2026) finds only 0 s and the last.
 # Reference: the height and [E] changes built into the synthetic dumps
 # (exact). Measured: every verdict as constructed; no other number.
 . "$(dirname "$0")/caseFunctions.sh"
@@ -59,9 +66,8 @@ cd "$runDir/breachEnded" || fail "cannot enter $runDir/breachEnded"
 # synthCase <name> <end time s> <lowering rate m/s> <period s (0: none)>
 #           [<time s from which the dumps are empty> [<DEM step s>]]:
 # the crest grain's top H(t) = 0.25 - rate t above 100 - floor(t/period)
-# resting grains; a dump every 0.5 s at the step nearest it (a DEM step
-# other than 1e-4 s: the step below it, as the solver's dumps fall a
-# step's round-off short)
+# resting grains; a dump every round(0.5/demDt) steps (demDt 1e-4 s unless
+# given: every 0.5 s) up to the end's step, as the solver dumps
 synthCase()
 {
     mkdir -p "$1/DEM" "$1/post" "$1/constant"
@@ -74,9 +80,9 @@ t_end, rate, period = (float(v) for v in sys.argv[2:5])
 t_gone = float(sys.argv[5]) if len(sys.argv) > 5 else 1e9
 dt = float(sys.argv[6]) if len(sys.argv) > 6 else 1e-4
 r = 0.01
-for k in range(int(round(t_end/0.5)) + 1):
-    t = 0.5*k
-    step = int(round(t/dt)) if dt == 1e-4 else int(t/dt)
+every = int(round(0.5/dt))
+for step in range(0, int(round(t_end/dt)) + 1, every):
+    t = step*dt
     top = 0.25 - rate*t
     n = 100 - (int(t/period + 1e-9) if period > 0 else 0)
     rows = ['1 %g 0.001 3.5 0.05 %.9f 0 0 0' % (r, top - r)]
@@ -111,11 +117,11 @@ ruleChecks()
 {
     local py="$1" out rc change
     # expect <case> <maxTime> <exit status> <printed height change mm>
-    #        <printed [E] change> <text>
+    #        <printed [E] change> <text> [<the piece's end s>]
     expect()
     {
         out=$(/usr/bin/python3 "$py" ended "$1" --window 20 --tolerance 0.005 \
-              --maxTime "$2" 2>&1)
+              --maxTime "$2" ${7:+--pieceEnd $7} 2>&1)
         rc=$?
         echo "  $1, longest run $2 s: exit $rc: $out"
         [ "$rc" = "$3" ] || fail "$1 (longest run $2 s): exit $rc, expected $3"
@@ -133,7 +139,9 @@ ruleChecks()
     expect shedding80 100 0 0.0 0.010 'the breach has ended'
     expect changing100 100 0 10.0 0.000 'NOT ENDED'
     expect changing100 200 1 10.0 0.000 'still changing'
+    expect changing100drift 100 0 10.0 0.000 'NOT ENDED' 100
     expect changing100drift 100 0 10.0 0.000 'NOT ENDED'
+    expect changing100drift 200 1 10.0 0.000 'still changing' 100
     # gone <case> <the mark it must name>
     gone()
     {
@@ -179,16 +187,39 @@ mutant()
 rule="level = state\['height_change'\] < tolerance and state\['energy_change'\] < energy_tolerance"
 mutant noTolerance "s/$rule/level = True/"
 mutant noEnergy "s/$rule/level = state['height_change'] < tolerance/"
-mutant noLongestRun "s/if not done and reached(case, state\['t_end'\], max_time):/if False:/"
-mutant exactLongestRun "s/t_end >= max_time - 0.5\*interval - 1e-9/t_end >= max_time - 1e-6/"
+mutant noLongestRun "s/if not done and reached(case, state\['t_end'\], max_time, piece_end):/if False:/"
+mutant lastDumpLongestRun "s/end = piece_end if piece_end is not None else t_end + interval/end = t_end/"
 mutant noEmptied "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/"
 mutant textOrder 's/key=time_of)/)/'
-for broken in noTolerance noEnergy noLongestRun exactLongestRun noEmptied textOrder
+for broken in noTolerance noEnergy noLongestRun lastDumpLongestRun noEmptied textOrder
 do
     msg=$( (ruleChecks $broken/damBreachAnalysis.py) 2>&1 ) \
         && fail "the checks pass with the rule broken ($broken)"
     echo "negative control $broken: ${msg##*FAIL: }"
 done
 
+# everyChecks <analysis script>: `deposit --every 20` on the run with the
+# DEM step of 9e-5 s (dumps 0.50004 s apart) takes the dump nearest each
+# multiple of 20 s, and the last: 0, 20.0, 40.0, 60.0, 80.0 and 99.5 s
+everyChecks()
+{
+    local times
+    times=$(/usr/bin/python3 "$1" deposit changing100drift --every 20 2>&1 \
+            | awk '$1 == "changing100drift" {printf "%s ", $2}')
+    echo "  deposit --every 20, changing100drift: $times"
+    [ "$times" = "0.0 20.0 40.0 60.0 80.0 99.5 " ] \
+        || fail "deposit --every 20 on changing100drift: times '$times', expected '0.0 20.0 40.0 60.0 80.0 99.5 '"
+}
+rm -rf exactEvery && mkdir -p exactEvery/damBreach && cp "$analysis" exactEvery/ \
+    && cp "$(dirname "$ruleModule")"/*.py exactEvery/damBreach/ \
+    || fail "negative control exactEvery: cannot copy the analysis"
+sed -i 's/<= 0.5\*interval + 1e-9 and i not in chosen/<= 1e-6 and i not in chosen/' exactEvery/damBreach/deposit.py
+cmp -s "$(dirname "$ruleModule")"/deposit.py exactEvery/damBreach/deposit.py \
+    && fail "negative control exactEvery: the line was not found"
+msg=$( (everyChecks exactEvery/damBreachAnalysis.py) 2>&1 ) \
+    && fail "the deposit check passes with dumps matched to the multiples of 20 s within 1e-6 s"
+echo "negative control exactEvery: ${msg##*FAIL: }"
+
 ruleChecks "$analysis"
-pass "the run goes on at 10 mm or [E] 0.050 over 20 s, stops at 3 mm and [E] 0.010 over 20 s, stops NOT ENDED at the longest run (100 s, also when the dumps fall a DEM step's round-off short of it; not at -maxTime 200), and stops when every grain has gone, naming the earliest mark"
+everyChecks "$analysis"
+pass "the run goes on at 10 mm or [E] 0.050 over 20 s, stops at 3 mm and [E] 0.010 over 20 s, stops NOT ENDED at the longest run (100 s, also when its last dump falls 0.49 s short of it; not at -maxTime 200), and stops when every grain has gone, naming the earliest mark; deposit --every 20 takes the dump nearest each 20 s"

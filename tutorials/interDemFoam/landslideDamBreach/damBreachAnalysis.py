@@ -10,10 +10,15 @@
                                               the grading of a poured dam
     damBreachAnalysis.py ended CASE [--window 20] [--tolerance 0.005]
                                [--energyTolerance 0.02] [--maxTime 300]
+                               [--pieceEnd T]
                                               exit 0 when the run should stop:
                                               the breach has ended (H and [E]
                                               level over the window) or the
-                                              run has reached maxTime
+                                              run has reached maxTime (its
+                                              last complete piece ended at
+                                              pieceEnd, as Allrun passes it;
+                                              without it, within a dump
+                                              interval after the last dump)
     damBreachAnalysis.py matrix DIR SCALE CASE... [--second CASE...]
                                               all eight scenarios: the matrix,
                                               the findings, Figs. 8-11 (with

@@ -28,9 +28,10 @@ def ended_command(args):
     ap.add_argument('--energyTolerance', type=float,
                     default=ended.LEVEL_ENERGY)
     ap.add_argument('--maxTime', type=float, default=300.0)
+    ap.add_argument('--pieceEnd', type=float, default=None)
     a = ap.parse_args(args)
     return 0 if ended.ended(a.case, a.window, a.tolerance, a.maxTime,
-                            a.energyTolerance) else 1
+                            a.energyTolerance, a.pieceEnd) else 1
 
 
 def cases_every_command(name, run):

@@ -11,13 +11,24 @@ from .dumps import REST_SPEED, dump_files, read_dump
 
 
 def dumps_every(case, every):
-    """(t, rows) of the case's particle dumps every `every` seconds, and
+    """(t, rows) of the case's particle dumps every `every` seconds (the
+    dump nearest each multiple of it: with demDt 9e-5 s, a matrix's
+    sample b, the dumps are 0.50004 s apart and miss the multiples), and
     its last."""
     dumps = dump_files(case, 'particles')
-    for i, (t, f) in enumerate(dumps):
-        last = i == len(dumps) - 1
-        if last or abs(t/every - round(t/every)) <= 1e-6:
-            yield t, read_dump(f)
+    if not dumps:
+        return
+    times = np.array([t for t, f in dumps])
+    interval = np.median(np.diff(times)) if len(times) > 1 else every
+    chosen = []
+    for k in range(int(round(times[-1]/every)) + 1):
+        i = int(np.argmin(np.abs(times - k*every)))
+        if abs(times[i] - k*every) <= 0.5*interval + 1e-9 and i not in chosen:
+            chosen.append(i)
+    if len(dumps) - 1 not in chosen:
+        chosen.append(len(dumps) - 1)
+    for i in chosen:
+        yield dumps[i][0], read_dump(dumps[i][1])
 
 
 def deposit(cases, every):

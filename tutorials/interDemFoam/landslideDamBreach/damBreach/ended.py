@@ -116,22 +116,28 @@ def breach_state(case, window=ENDED_WINDOW, tolerance=ENDED_HEIGHT,
     return state
 
 
-def reached(case, t_end, max_time):
-    """True when the last dump's time t_end is max_time: within half the
-    interval between the last two dumps. A dump's time is its step times
-    the DEM step, which falls short of the piece's end by the round-off
-    of the steps (199.99989 s at 200 s with the steps 10 % shorter of a
-    matrix's sample b), far less than a dump interval (0.5 s)."""
+def reached(case, t_end, max_time, piece_end=None):
+    """True when the run has reached max_time: the end of its last
+    complete piece, piece_end (Allrun's nominal end, 200 for the piece to
+    200 s), is max_time. The last dump is no measure of it: dumps come
+    every round(0.5/demDt) steps, so with the steps 10 % shorter of a
+    matrix's sample b (demDt 9e-5 s) they are 0.50004 s apart and the last
+    before a piece's end at 200 s is at 199.516 s. Without piece_end (the
+    rule applied by hand) the piece is taken to end within one dump
+    interval after the last dump."""
     dumps = dump_files(case, 'particles')
     interval = dumps[-1][0] - dumps[-2][0] if len(dumps) > 1 else 0.0
-    return t_end >= max_time - 0.5*interval - 1e-9
+    end = piece_end if piece_end is not None else t_end + interval
+    return end >= max_time - 1e-6
 
 
-def ended(case, window, tolerance, max_time, energy_tolerance):
+def ended(case, window, tolerance, max_time, energy_tolerance,
+          piece_end=None):
     """True when the run should stop: breach_state's rule (every grain
     has left, or over the last window seconds the dam height changed by
     less than tolerance and [E] by less than energy_tolerance), or the run
-    has reached max_time (the longest run of its scale; said so)."""
+    has reached max_time (the longest run of its scale; said so): its
+    last complete piece ended at piece_end (reached)."""
     state = breach_state(case, window, tolerance, energy_tolerance)
     if state['gone']:
         print('%s: every grain has left the flume (%s): the breach has ended'
@@ -153,7 +159,7 @@ def ended(case, window, tolerance, max_time, energy_tolerance):
                  '<' if e_change < energy_tolerance else '>=',
                  energy_tolerance,
                  'the breach has ended' if done else 'still changing'))
-    if not done and reached(case, state['t_end'], max_time):
+    if not done and reached(case, state['t_end'], max_time, piece_end):
         print('%s: NOT ENDED: the run has reached %g s, the longest run of '
               'its scale (Allrun -maxTime); stopped and analysed as it is'
               % (case, max_time))

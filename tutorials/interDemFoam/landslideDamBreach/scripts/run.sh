@@ -97,9 +97,9 @@ runPieces()
         # changed by less than 5 mm and [E] by less than 0.02, or every
         # grain has left the flume (the rule's defaults, breach_state, which
         # the matrix applies too), or the run has reached the longest run
-        # of its scale, $maxEnd s
+        # of its scale, $maxEnd s (the piece just run ended at $end s)
         /usr/bin/python3 ../damBreachAnalysis.py ended . --maxTime $maxEnd \
-            && break
+            --pieceEnd $end && break
         end=$(/usr/bin/python3 -c "print('%g' % ($end + $pieceLength))")
         foamDictionary -entry endTime -set "$end" system/controlDict > /dev/null
         suffix=to$end
