@@ -30,6 +30,9 @@
 #     with the piece's end given as Allrun gives it (--pieceEnd 100), stop,
 #     NOT ENDED; by hand, without it (the piece taken to end within a dump
 #     interval after the last dump), the same;
+#   - the run to 80 s with the piece's end given as 100 s and the longest
+#     run 100 s: stop, NOT ENDED (the piece's end is what counts: the last
+#     dump plus an interval is 80.5 s);
 #   - a 10 s run (shorter than the 20 s window): goes on with -maxTime
 #     200, stops NOT ENDED with -maxTime 10;
 #   - every grain gone: the dumps from 78 s on hold no grain (height 0: 250
@@ -44,7 +47,8 @@
 # (grains leaving do not count), with the longest run ignored (a run
 # never stops; for a run shorter than the window too), with the longest
 # run judged by the last dump's time (the run with the DEM step of 9e-5
-# s goes on past it, as the matrix's sample b did to 220 s), with the emptied
+# s goes on past it, as the matrix's sample b did to 220 s), with the
+# piece's end ignored (the run to 80 s given the end 100 s goes on), with the emptied
 # mark ignored (an empty flume judged by its height) and with
 # the marks sorted as text.
 # And the dumps the deposit and budget tables take every 20 s
@@ -142,6 +146,7 @@ ruleChecks()
     expect changing100drift 100 0 10.0 0.000 'NOT ENDED' 100
     expect changing100drift 100 0 10.0 0.000 'NOT ENDED'
     expect changing100drift 200 1 10.0 0.000 'still changing' 100
+    expect changing80 100 0 10.0 0.000 'NOT ENDED' 100
     # gone <case> <the mark it must name>
     gone()
     {
@@ -183,15 +188,16 @@ mutant()
         && fail "negative control $1: the rule's line was not found"
 }
 
-# negative controls: the rule broken in six ways must fail the checks
+# negative controls: the rule broken in seven ways must fail the checks
 rule="level = state\['height_change'\] < tolerance and state\['energy_change'\] < energy_tolerance"
 mutant noTolerance "s/$rule/level = True/"
 mutant noEnergy "s/$rule/level = state['height_change'] < tolerance/"
 mutant noLongestRun "s/if not done and reached(case, state\['t_end'\], max_time, piece_end):/if False:/"
 mutant lastDumpLongestRun "s/end = piece_end if piece_end is not None else t_end + interval/end = t_end/"
+mutant ignorePieceEnd "s/end = piece_end if piece_end is not None else t_end + interval/end = t_end + interval/"
 mutant noEmptied "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/"
 mutant textOrder 's/key=time_of)/)/'
-for broken in noTolerance noEnergy noLongestRun lastDumpLongestRun noEmptied textOrder
+for broken in noTolerance noEnergy noLongestRun lastDumpLongestRun ignorePieceEnd noEmptied textOrder
 do
     msg=$( (ruleChecks $broken/damBreachAnalysis.py) 2>&1 ) \
         && fail "the checks pass with the rule broken ($broken)"
