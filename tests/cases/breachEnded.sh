@@ -193,8 +193,8 @@ rule="level = state\['height_change'\] < tolerance and state\['energy_change'\] 
 mutant noTolerance "s/$rule/level = True/"
 mutant noEnergy "s/$rule/level = state['height_change'] < tolerance/"
 mutant noLongestRun "s/if not done and reached(case, state\['t_end'\], max_time, piece_end):/if False:/"
-mutant lastDumpLongestRun "s/end = piece_end if piece_end is not None else t_end + interval/end = t_end/"
-mutant ignorePieceEnd "s/end = piece_end if piece_end is not None else t_end + interval/end = t_end + interval/"
+mutant lastDumpLongestRun "s/    end = piece_end$/    end = t_end/; s/end = t_end + (dumps/end = t_end + 0*(dumps/"
+mutant ignorePieceEnd "s/    end = piece_end$/    end = None/"
 mutant noEmptied "s/state\['gone'\] is not None or (not state\['short'\] and level)/not state['short'] and level/; s/    if state\['gone'\]:/    if False:/"
 mutant textOrder 's/key=time_of)/)/'
 for broken in noTolerance noEnergy noLongestRun lastDumpLongestRun ignorePieceEnd noEmptied textOrder

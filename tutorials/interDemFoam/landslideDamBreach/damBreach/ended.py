@@ -125,9 +125,10 @@ def reached(case, t_end, max_time, piece_end=None):
     before a piece's end at 200 s is at 199.516 s. Without piece_end (the
     rule applied by hand) the piece is taken to end within one dump
     interval after the last dump."""
-    dumps = dump_files(case, 'particles')
-    interval = dumps[-1][0] - dumps[-2][0] if len(dumps) > 1 else 0.0
-    end = piece_end if piece_end is not None else t_end + interval
+    end = piece_end
+    if end is None:
+        dumps = dump_files(case, 'particles')
+        end = t_end + (dumps[-1][0] - dumps[-2][0] if len(dumps) > 1 else 0.0)
     return end >= max_time - 1e-6
 
 
